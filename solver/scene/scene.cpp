@@ -1,0 +1,303 @@
+#include "solver/scene/scene.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <optional>
+#include <set>
+#include <sstream>
+
+namespace capsule {
+namespace {
+
+using nlohmann::json;
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+// Reads one JSON object, remembering which keys were used so the rest can be refused.
+class ObjectReader {
+ public:
+  ObjectReader(const json& j, std::string source, std::string path)
+      : j_(j), source_(std::move(source)), path_(std::move(path)) {
+    if (!j_.is_object()) fail("", "expected a JSON object", "an object {...}");
+  }
+
+  [[noreturn]] void fail(const std::string& key, const std::string& problem,
+                         const std::string& allowed) const {
+    std::string where = path_.empty() ? key : (key.empty() ? path_ : path_ + "." + key);
+    if (where.empty()) where = "(top level)";
+    throw SceneError(source_ + ": " + where + ": " + problem +
+                     (allowed.empty() ? "" : " (allowed: " + allowed + ")"));
+  }
+
+  bool has(const std::string& key) {
+    used_.insert(key);
+    return j_.contains(key);
+  }
+
+  // A number in [lo, hi]; lo_open / hi_open make that end exclusive.
+  double number(const std::string& key, std::optional<double> fallback, double lo, double hi,
+                bool lo_open = false, bool hi_open = false) {
+    std::string range = std::string(lo_open ? "(" : "[") + fmt(lo) + ", " + fmt(hi) + (hi_open ? ")" : "]");
+    if (!has(key)) {
+      if (!fallback) fail(key, "missing required key", range);
+      return *fallback;
+    }
+    const json& v = j_.at(key);
+    if (!v.is_number()) fail(key, "expected a number, got " + v.dump(), range);
+    double x = v.get<double>();
+    if (!std::isfinite(x) || (lo_open ? x <= lo : x < lo) || (hi_open ? x >= hi : x > hi))
+      fail(key, "value " + fmt(x) + " out of range", range);
+    return x;
+  }
+
+  int integer(const std::string& key, int fallback, int lo, int hi) {
+    std::string range = "integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    if (!has(key)) return fallback;
+    const json& v = j_.at(key);
+    if (!v.is_number() || std::floor(v.get<double>()) != v.get<double>())
+      fail(key, "expected an integer, got " + v.dump(), range);
+    double x = v.get<double>();
+    if (x < lo || x > hi) fail(key, "value " + fmt(x) + " out of range", range);
+    return static_cast<int>(x);
+  }
+
+  std::string choice(const std::string& key, std::optional<std::string> fallback,
+                     const std::vector<std::string>& allowed) {
+    std::string list;
+    for (const auto& a : allowed) list += (list.empty() ? "" : " | ") + a;
+    if (!has(key)) {
+      if (!fallback) fail(key, "missing required key", list);
+      return *fallback;
+    }
+    const json& v = j_.at(key);
+    if (!v.is_string()) fail(key, "expected a string, got " + v.dump(), list);
+    std::string s = v.get<std::string>();
+    for (const auto& a : allowed)
+      if (s == a) return s;
+    fail(key, "unknown value \"" + s + "\"", list);
+  }
+
+  std::vector<double> numbers(const std::string& key, std::vector<double> fallback, double lo,
+                              double hi, std::size_t min_n, std::size_t max_n) {
+    std::string range = std::to_string(min_n) + ".." + std::to_string(max_n) + " numbers in [" +
+                        fmt(lo) + ", " + fmt(hi) + "]";
+    if (!has(key)) return fallback;
+    const json& v = j_.at(key);
+    if (!v.is_array()) fail(key, "expected an array, got " + v.dump(), range);
+    if (v.size() < min_n || v.size() > max_n)
+      fail(key, "expected " + std::to_string(min_n) + ".." + std::to_string(max_n) +
+                    " entries, got " + std::to_string(v.size()), range);
+    std::vector<double> out;
+    for (const auto& e : v) {
+      if (!e.is_number()) fail(key, "expected numbers, got " + e.dump(), range);
+      double x = e.get<double>();
+      if (!std::isfinite(x) || x < lo || x > hi) fail(key, "value " + fmt(x) + " out of range", range);
+      out.push_back(x);
+    }
+    return out;
+  }
+
+  // A nested object; missing -> empty object unless required.
+  json object(const std::string& key, bool required) {
+    if (!has(key)) {
+      if (required) fail(key, "missing required key", "an object {...}");
+      return json::object();
+    }
+    return j_.at(key);
+  }
+
+  std::string child_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+  const std::string& source() const { return source_; }
+
+  // Refuses any key not read: a misspelt key must never be silently ignored.
+  void refuse_unknown(const std::vector<std::string>& known) const {
+    for (auto it = j_.begin(); it != j_.end(); ++it) {
+      if (!used_.count(it.key())) {
+        std::string list;
+        for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+        fail(it.key(), "unknown key", list);
+      }
+    }
+  }
+
+ private:
+  const json& j_;
+  std::string source_, path_;
+  std::set<std::string> used_;
+};
+
+PhaseSpec read_phase(const json& j, const std::string& source, const std::string& path, bool shear) {
+  ObjectReader r(j, source, path);
+  PhaseSpec p;
+  p.until = shear ? r.choice("until", std::nullopt, {"time", "steady", "theta", "beta"})
+                  : r.choice("until", std::nullopt, {"time", "settled"});
+  if (p.until == "time") {
+    p.kt = r.number("kt", std::nullopt, shear ? 0.0 : 0.0, 1e4, shear, false);
+  } else {
+    p.kt = r.number("kt", 0.0, 0.0, 0.0);  // only meaningful for "time"
+  }
+  if (p.until == "theta" || p.until == "beta") {
+    p.value = r.number("value", std::nullopt, -10.0, 10.0);
+  } else {
+    p.value = r.number("value", 0.0, 0.0, 0.0);
+  }
+  p.tolerance = r.number("tolerance", 1e-3, 0.0, 1.0, true);
+  p.window_kt = r.number("window_kt", 2.0, 0.0, 100.0, true);
+  p.max_kt = r.number("max_kt", 50.0, 0.0, 1e4, true);
+  if (p.until == "time" && p.kt > p.max_kt) p.max_kt = p.kt;
+  if (shear) {
+    p.oscillatory_period_kt = r.number("oscillatory_period_kt", 0.0, 0.0, 1e4);
+    r.refuse_unknown({"until", "kt", "value", "tolerance", "window_kt", "max_kt", "oscillatory_period_kt"});
+  } else {
+    r.refuse_unknown({"until", "kt", "value", "tolerance", "window_kt", "max_kt"});
+  }
+  return p;
+}
+
+}  // namespace
+
+Scene Scene::from_json(const json& j, const std::string& source) {
+  ObjectReader r(j, source, "");
+  Scene s;
+  s.dim = r.integer("dim", 0, 2, 3);
+  if (!r.has("dim")) r.fail("dim", "missing required key", "2 | 3");
+  if (s.dim == 2) {
+    s.shape = r.choice("shape", std::nullopt, {"circle", "biconcave"});
+    s.law = r.choice("law", std::string("hooke"), {"hooke"});
+  } else {
+    s.shape = r.choice("shape", std::nullopt, {"sphere", "biconcave"});
+    s.law = r.choice("law", std::string(s.shape == "sphere" ? "neo-hookean" : "skalak"),
+                     {"neo-hookean", "skalak"});
+  }
+  s.C = r.number("C", 15.0, 0.0, 1e3, true);
+  s.Re = r.number("Re", 0.05, 0.0, 10.0, true);
+  s.Ca = r.number("Ca", std::nullopt, 0.0, 10.0, true);
+  s.E_b = r.number("E_b", std::nullopt, 0.0, 10.0);
+  s.V = r.number("V", std::nullopt, 0.0, 100.0, true);
+  s.eta = r.number("eta", std::nullopt, 0.0, 1e3);
+  s.G = r.number("G", 50.0, 0.0, 1e4, true);
+  s.c0 = r.number("c0", 0.0, -10.0, 10.0);
+  if (s.dim == 3) {
+    s.reference_case = r.choice("reference_case", std::string("none"), {"none", "A", "B", "C"});
+    if (s.reference_case != "none" && s.shape != "biconcave")
+      r.fail("reference_case", "case " + s.reference_case + " needs shape \"biconcave\"",
+             "none for a sphere");
+  } else {
+    s.reference_case = r.choice("reference_case", std::string("none"), {"none"});
+  }
+  s.volume_penalty = r.number("volume_penalty", 0.0, 0.0, 1e6);
+
+  {
+    json pl = r.object("power_law", false);
+    ObjectReader p(pl, source, r.child_path("power_law"));
+    s.power_law_K = p.number("K", 0.0, 0.0, 1e3);
+    s.power_law_n = p.number("n", 1.0, 0.0, 3.0, true);
+    p.refuse_unknown({"K", "n"});
+  }
+  {
+    json res = r.object("resolution", false);
+    ObjectReader q(res, source, r.child_path("resolution"));
+    s.a = q.number("a", 10.0, 2.0, 200.0);
+    std::vector<double> dflt = s.dim == 2 ? std::vector<double>{16, 12} : std::vector<double>{10, 10, 8};
+    s.domain = q.numbers("domain", dflt, 3.0, 100.0, s.dim, s.dim);
+    s.segments = q.integer("segments", 140, 16, 100000);
+    s.mesh_level = q.integer("mesh_level", 4, 0, 6);
+    if (q.has("tau")) {
+      const json& t = res.at("tau");
+      if (!t.is_number() || (t.get<double>() != 0.0 &&
+                             (t.get<double>() < 0.505 || t.get<double>() > 10.0)))
+        q.fail("tau", "relaxation time " + t.dump() + " cannot be run stably",
+               "0 (chosen by the solver) or [0.505, 10]");
+      s.tau = t.get<double>();
+    }
+    q.refuse_unknown({"a", "domain", "segments", "mesh_level", "tau"});
+  }
+  {
+    json proto = r.object("protocol", true);
+    ObjectReader p(proto, source, "protocol");
+    s.shear = read_phase(p.object("shear", true), source, "protocol.shear", true);
+    s.recover = read_phase(p.object("recover", true), source, "protocol.recover", false);
+    p.refuse_unknown({"shear", "recover"});
+  }
+  {
+    json out = r.object("output", false);
+    ObjectReader o(out, source, "output");
+    s.output_interval_kt = o.number("interval_kt", 0.05, 0.0, 10.0, true);
+    s.shapes_at_kt = o.numbers("shapes_at_kt", {}, 0.0, 1e5, 0, 10000);
+    s.snapshots = o.choice("snapshots", std::string("none"), {"none", "vtk"});
+    o.refuse_unknown({"interval_kt", "shapes_at_kt", "snapshots"});
+  }
+  r.refuse_unknown({"dim", "shape", "law", "C", "Re", "Ca", "E_b", "V", "eta", "G", "c0",
+                    "reference_case", "volume_penalty", "power_law", "resolution", "protocol",
+                    "output"});
+  return s;
+}
+
+Scene Scene::load(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw SceneError(path + ": cannot open the scene file");
+  json j;
+  try {
+    in >> j;
+  } catch (const json::parse_error& e) {
+    throw SceneError(path + ": not valid JSON: " + e.what());
+  }
+  return from_json(j, path);
+}
+
+namespace {
+json phase_json(const PhaseSpec& p, bool shear) {
+  json j = {{"until", p.until}, {"kt", p.kt}, {"value", p.value}, {"tolerance", p.tolerance},
+            {"window_kt", p.window_kt}, {"max_kt", p.max_kt}};
+  if (shear) j["oscillatory_period_kt"] = p.oscillatory_period_kt;
+  return j;
+}
+}  // namespace
+
+json Scene::to_json() const {
+  json j;
+  j["dim"] = dim;
+  j["shape"] = shape;
+  j["law"] = law;
+  j["C"] = C;
+  j["Re"] = Re;
+  j["Ca"] = Ca;
+  j["E_b"] = E_b;
+  j["V"] = V;
+  j["eta"] = eta;
+  j["G"] = G;
+  j["c0"] = c0;
+  j["reference_case"] = reference_case;
+  j["volume_penalty"] = volume_penalty;
+  j["power_law"] = {{"K", power_law_K}, {"n", power_law_n}};
+  j["resolution"] = {{"a", a}, {"domain", domain}, {"segments", segments},
+                     {"mesh_level", mesh_level}, {"tau", tau}};
+  j["protocol"] = {{"shear", phase_json(shear, true)}, {"recover", phase_json(recover, false)}};
+  j["output"] = {{"interval_kt", output_interval_kt}, {"shapes_at_kt", shapes_at_kt},
+                 {"snapshots", snapshots}};
+  // Doubles that happen to be integral must still be written as doubles so that
+  // "a": 10 and "a": 10.0 give the same canonical text.
+  std::function<void(json&)> as_float = [&](json& v) {
+    if (v.is_number_integer()) v = static_cast<double>(v.get<long long>());
+    else if (v.is_object() || v.is_array())
+      for (auto& e : v) as_float(e);
+  };
+  for (auto it = j.begin(); it != j.end(); ++it)
+    if (it.key() != "dim") as_float(it.value());
+  j["resolution"]["segments"] = segments;
+  j["resolution"]["mesh_level"] = mesh_level;
+  return j;
+}
+
+std::vector<int> Scene::grid() const {
+  std::vector<int> n(3, 1);
+  for (int d = 0; d < dim; ++d) n[d] = static_cast<int>(std::lround(domain[d] * a));
+  return n;
+}
+
+}  // namespace capsule

@@ -1,0 +1,69 @@
+#pragma once
+// One scene = one member of a study (DESIGN 3.6): the capsule, the fluid, the
+// resolution, the protocol (shear, then recover) and what to write.
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "solver/scene/version.hpp"
+
+namespace capsule {
+
+// A refused scene. what() reads "<file>: <json path>: <problem> (allowed: <range>)".
+struct SceneError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// One phase of the protocol. Shear: until "time" (kt), "steady" (D_xy range over the last
+// window_kt below tolerance), "theta" (inclination reaches value, rad, from above: tumbling,
+// Sec. 4.1.2), "beta" (phase angle of the tracked element reaches value: tank-treading,
+// Sec. 4.1.1). Recover: until "time" (kt) or "settled" (as "steady"). max_kt caps the phase.
+struct PhaseSpec {
+  std::string until;
+  double kt = 0;            // duration for until == "time"
+  double value = 0;         // threshold for "theta" / "beta"
+  double tolerance = 1e-3;  // absolute range of D_xy over window_kt for "steady" / "settled"
+  double window_kt = 2.0;
+  double max_kt = 50.0;
+  double oscillatory_period_kt = 0;  // shear only: > 0 -> wall speed (H/2) k sin(pi t / T) (Sec. 5.2.2)
+};
+
+struct Scene {
+  int dim = 2;
+  std::string shape;           // 2D: circle | biconcave; 3D: sphere | biconcave
+  std::string law;             // 2D: hooke; 3D: neo-hookean | skalak
+  double C = 15;               // Skalak area-dilation constant (60)-(61)
+  double Re = 0.05;            // Re = k a^2 / nu
+  double Ca = 0;               // (34)
+  double E_b = 0;              // (35)
+  double V = 1;                // mu_c / mu_a
+  double eta = 0;              // (36)
+  double G = 50;               // E_m / E_s, standard linear solid (63)-(67)
+  double c0 = 0;               // spontaneous curvature, units of 1/a
+  std::string reference_case = "none";  // 3D: none | A | B | C (Table 1)
+  double volume_penalty = 0;   // K_v of (84), in units of E_s / a; 0 = off
+  double power_law_K = 0;      // (102), dimensionless (gamma in units of k); 0 = off
+  double power_law_n = 1;
+  double a = 10;               // capsule (equivalent) radius in lattice nodes
+  std::vector<double> domain;  // in units of a: 2D {16, 12}, 3D {10, 10, 8}
+  int segments = 140;          // 2D membrane segments
+  int mesh_level = 4;          // 3D icosahedron subdivisions (4 -> 2562 vertices)
+  double tau = 0;              // relaxation time; 0 = chosen by the solver
+  PhaseSpec shear;
+  PhaseSpec recover;
+  double output_interval_kt = 0.05;
+  std::vector<double> shapes_at_kt;
+  std::string snapshots = "none";  // none | vtk
+
+  // Parses and validates; throws SceneError naming source_name, the key and the allowed range.
+  static Scene from_json(const nlohmann::json& j, const std::string& source_name);
+  static Scene load(const std::string& path);
+  // The complete canonical scene: every key, defaults filled, numbers typed by the schema.
+  nlohmann::json to_json() const;
+
+  // Lattice size (nx, ny, nz) from a and the domain (nz = 1 in 2D).
+  std::vector<int> grid() const;
+};
+
+}  // namespace capsule

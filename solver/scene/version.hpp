@@ -1,0 +1,6 @@
+#pragma once
+// The solver's physics version: part of every member id. Bump it whenever a change
+// alters the numbers a scene produces, so studies rerun members made by older physics.
+namespace capsule {
+inline constexpr const char* physics_version = "1";
+}  // namespace capsule
