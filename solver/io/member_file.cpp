@@ -1,0 +1,325 @@
+#include "solver/io/member_file.hpp"
+
+#include <hdf5.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <stdexcept>
+
+namespace capsule::io {
+namespace {
+
+// Closes an HDF5 handle at scope exit.
+class Handle {
+ public:
+  Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
+  ~Handle() {
+    if (id_ >= 0) close_(id_);
+  }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  operator hid_t() const { return id_; }
+  bool ok() const { return id_ >= 0; }
+
+ private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+  throw std::runtime_error(path + ": " + what);
+}
+
+void check(herr_t r, const std::string& path, const std::string& what) {
+  if (r < 0) fail(path, what);
+}
+
+hid_t string_type() {
+  hid_t t = H5Tcopy(H5T_C_S1);
+  H5Tset_size(t, H5T_VARIABLE);
+  H5Tset_cset(t, H5T_CSET_UTF8);
+  return t;
+}
+
+void write_string_attr(hid_t obj, const std::string& name, const std::string& value, const std::string& path) {
+  Handle type(string_type(), H5Tclose);
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  Handle attr(H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  if (!attr.ok()) fail(path, "cannot create attribute " + name);
+  const char* c = value.c_str();
+  check(H5Awrite(attr, type, &c), path, "cannot write attribute " + name);
+}
+
+template <class T>
+void write_scalar_attr(hid_t obj, const std::string& name, T value, hid_t mem_type, hid_t file_type,
+                       const std::string& path) {
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  Handle attr(H5Acreate2(obj, name.c_str(), file_type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  if (!attr.ok()) fail(path, "cannot create attribute " + name);
+  check(H5Awrite(attr, mem_type, &value), path, "cannot write attribute " + name);
+}
+
+void write_matrix(hid_t group, const std::string& name, const double* data, hsize_t rows, hsize_t cols,
+                  const std::string& path) {
+  hsize_t dims[2] = {rows, cols};
+  Handle space(H5Screate_simple(cols == 0 ? 1 : 2, dims, nullptr), H5Sclose);
+  Handle set(H5Dcreate2(group, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+             H5Dclose);
+  if (!set.ok()) fail(path, "cannot create dataset " + name);
+  if (rows > 0) check(H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), path, "write " + name);
+}
+
+}  // namespace
+
+MemberWriter::MemberWriter(std::string final_path) : final_path_(std::move(final_path)) {}
+
+void MemberWriter::set_attribute(const std::string& name, const std::string& value) { attributes_[name] = value; }
+void MemberWriter::set_attribute(const std::string& name, double value) { attributes_[name] = value; }
+void MemberWriter::set_attribute(const std::string& name, long value) { attributes_[name] = value; }
+void MemberWriter::set_scene(const nlohmann::json& scene) { attributes_["scene"] = scene.dump(); }
+
+void MemberWriter::append(const std::map<std::string, double>& row, const std::vector<double>& beta) {
+  if (rows_ == 0) {
+    for (const auto& [k, v] : row) columns_.push_back(k);
+  } else if (row.size() != columns_.size()) {
+    throw std::logic_error("member row " + std::to_string(rows_) + " has " + std::to_string(row.size()) +
+                           " columns, the first had " + std::to_string(columns_.size()));
+  }
+  for (const auto& c : columns_) {
+    auto it = row.find(c);
+    if (it == row.end()) throw std::logic_error("member row lacks column " + c);
+    series_[c].push_back(it->second);
+  }
+  if (!beta.empty() || !beta_.empty()) {
+    if (!beta_.empty() && beta.size() != beta_.front().size())
+      throw std::logic_error("member row: beta width changed");
+    beta_.push_back(beta);
+  }
+  ++rows_;
+}
+
+void MemberWriter::set_markers(const std::map<std::string, double>& markers) { markers_ = markers; }
+
+void MemberWriter::add_shape(double kt, const std::vector<double>& xyz, int dim, const std::vector<int>& triangles) {
+  shapes_.push_back({kt, xyz, dim});
+  if (!triangles.empty()) triangles_ = triangles;
+}
+
+void MemberWriter::write(const std::string& path, const std::string& status) const {
+  Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+  if (!file.ok()) fail(path, "cannot create the member file");
+  write_string_attr(file, "status", status, path);
+  for (const auto& [name, value] : attributes_) {
+    if (name == "status") continue;
+    if (auto s = std::get_if<std::string>(&value)) write_string_attr(file, name, *s, path);
+    else if (auto d = std::get_if<double>(&value))
+      write_scalar_attr(file, name, *d, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, path);
+    else write_scalar_attr(file, name, std::get<long>(value), H5T_NATIVE_LONG, H5T_STD_I64LE, path);
+  }
+  {
+    Handle series(H5Gcreate2(file, "series", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+    for (const auto& c : columns_) write_matrix(series, c, series_.at(c).data(), rows_, 0, path);
+    if (!beta_.empty()) {
+      std::vector<double> flat;
+      for (const auto& r : beta_) flat.insert(flat.end(), r.begin(), r.end());
+      write_matrix(series, "beta", flat.data(), beta_.size(), beta_.front().size(), path);
+    }
+  }
+  {
+    Handle markers(H5Gcreate2(file, "markers", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+    for (const auto& [name, v] : markers_)
+      write_scalar_attr(markers, name, v, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, path);
+  }
+  if (!shapes_.empty()) {
+    Handle shapes(H5Gcreate2(file, "shapes", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+    for (std::size_t i = 0; i < shapes_.size(); ++i) {
+      char name[32];
+      std::snprintf(name, sizeof name, "%04zu", i);
+      const auto& s = shapes_[i];
+      write_matrix(shapes, name, s.xyz.data(), s.xyz.size() / s.dim, s.dim, path);
+      Handle set(H5Dopen2(shapes, name, H5P_DEFAULT), H5Dclose);
+      write_scalar_attr(set, "kt", s.kt, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, path);
+    }
+    if (!triangles_.empty()) {
+      hsize_t dims[2] = {triangles_.size() / 3, 3};
+      Handle space(H5Screate_simple(2, dims, nullptr), H5Sclose);
+      Handle set(H5Dcreate2(shapes, "triangles", H5T_STD_I32LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                 H5Dclose);
+      check(H5Dwrite(set, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, triangles_.data()), path, "triangles");
+    }
+  }
+  check(H5Fflush(file, H5F_SCOPE_GLOBAL), path, "cannot flush");
+}
+
+void MemberWriter::checkpoint() {
+  // Write beside, then rename: the .partial file is always readable.
+  std::string tmp = partial_path() + ".tmp";
+  write(tmp, "running");
+  std::filesystem::rename(tmp, partial_path());
+}
+
+void MemberWriter::finish(const std::string& status) {
+  std::string tmp = partial_path() + ".tmp";
+  write(tmp, status);
+  std::filesystem::rename(tmp, partial_path());
+  std::filesystem::rename(partial_path(), final_path_);
+}
+
+// ---------------------------------------------------------------- reading
+
+namespace {
+
+struct AttrVisit {
+  nlohmann::json* out;
+  std::string path;
+};
+
+herr_t read_attr(hid_t loc, const char* name, const H5A_info_t*, void* data) {
+  auto* v = static_cast<AttrVisit*>(data);
+  Handle attr(H5Aopen(loc, name, H5P_DEFAULT), H5Aclose);
+  Handle type(H5Aget_type(attr), H5Tclose);
+  H5T_class_t cls = H5Tget_class(type);
+  if (cls == H5T_STRING) {
+    std::string value;
+    if (H5Tis_variable_str(type) > 0) {
+      Handle mem(string_type(), H5Tclose);
+      char* c = nullptr;
+      if (H5Aread(attr, mem, &c) < 0) return -1;
+      value = c ? c : "";
+      H5free_memory(c);
+    } else {
+      std::size_t n = H5Tget_size(type);
+      std::string buf(n, '\0');
+      if (H5Aread(attr, type, buf.data()) < 0) return -1;
+      value = buf.c_str();
+    }
+    (*v->out)[name] = value;
+  } else if (cls == H5T_INTEGER) {
+    long x = 0;
+    if (H5Aread(attr, H5T_NATIVE_LONG, &x) < 0) return -1;
+    (*v->out)[name] = x;
+  } else if (cls == H5T_FLOAT) {
+    double x = 0;
+    if (H5Aread(attr, H5T_NATIVE_DOUBLE, &x) < 0) return -1;
+    (*v->out)[name] = x;
+  }
+  return 0;
+}
+
+nlohmann::json read_attributes(hid_t obj, const std::string& path) {
+  nlohmann::json out = nlohmann::json::object();
+  AttrVisit v{&out, path};
+  hsize_t idx = 0;
+  if (H5Aiterate2(obj, H5_INDEX_NAME, H5_ITER_INC, &idx, read_attr, &v) < 0) fail(path, "cannot read attributes");
+  return out;
+}
+
+std::vector<double> read_doubles(hid_t set, std::vector<hsize_t>& dims) {
+  Handle space(H5Dget_space(set), H5Sclose);
+  int rank = H5Sget_simple_extent_ndims(space);
+  dims.assign(rank, 0);
+  H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+  hsize_t n = 1;
+  for (auto d : dims) n *= d;
+  std::vector<double> out(n);
+  if (n > 0) H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data());
+  return out;
+}
+
+struct NameList {
+  std::vector<std::string> names;
+};
+herr_t collect_name(hid_t, const char* name, const H5L_info_t*, void* data) {
+  static_cast<NameList*>(data)->names.push_back(name);
+  return 0;
+}
+std::vector<std::string> children(hid_t group) {
+  NameList list;
+  hsize_t idx = 0;
+  H5Literate(group, H5_INDEX_NAME, H5_ITER_INC, &idx, collect_name, &list);
+  return list.names;
+}
+
+// HDF5 prints its own error stack to stderr by default; we report errors ourselves.
+struct QuietHdf5 {
+  QuietHdf5() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+};
+
+}  // namespace
+
+MemberData read_member(const std::string& path) {
+  static QuietHdf5 quiet;
+  if (!std::filesystem::exists(path)) fail(path, "no such member file");
+  Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  if (!file.ok()) fail(path, "not a readable HDF5 member file");
+  MemberData m;
+  m.path = path;
+  m.attributes = read_attributes(file, path);
+  if (!m.attributes.contains("status")) fail(path, "no status attribute: not a member file");
+  m.status = m.attributes["status"].get<std::string>();
+  if (m.attributes.contains("scene") && m.attributes["scene"].is_string()) {
+    try {
+      m.attributes["scene"] = nlohmann::json::parse(m.attributes["scene"].get<std::string>());
+    } catch (const std::exception&) {
+      fail(path, "attribute scene is not JSON");
+    }
+  }
+  if (H5Lexists(file, "series", H5P_DEFAULT) > 0) {
+    Handle series(H5Gopen2(file, "series", H5P_DEFAULT), H5Gclose);
+    for (const auto& name : children(series)) {
+      Handle set(H5Dopen2(series, name.c_str(), H5P_DEFAULT), H5Dclose);
+      std::vector<hsize_t> dims;
+      auto data = read_doubles(set, dims);
+      if (name == "beta" && dims.size() == 2) {
+        for (hsize_t r = 0; r < dims[0]; ++r)
+          m.beta.emplace_back(data.begin() + r * dims[1], data.begin() + (r + 1) * dims[1]);
+      } else {
+        m.series[name] = std::move(data);
+      }
+    }
+  }
+  if (H5Lexists(file, "markers", H5P_DEFAULT) > 0) {
+    Handle markers(H5Gopen2(file, "markers", H5P_DEFAULT), H5Gclose);
+    auto a = read_attributes(markers, path);
+    for (auto it = a.begin(); it != a.end(); ++it)
+      m.markers[it.key()] = it.value().is_number() ? it.value().get<double>() : std::nan("");
+  }
+  if (H5Lexists(file, "shapes", H5P_DEFAULT) > 0) {
+    Handle shapes(H5Gopen2(file, "shapes", H5P_DEFAULT), H5Gclose);
+    for (const auto& name : children(shapes)) {
+      Handle set(H5Dopen2(shapes, name.c_str(), H5P_DEFAULT), H5Dclose);
+      if (name == "triangles") {
+        Handle space(H5Dget_space(set), H5Sclose);
+        hsize_t dims[2] = {0, 0};
+        H5Sget_simple_extent_dims(space, dims, nullptr);
+        m.triangles.resize(dims[0] * dims[1]);
+        if (!m.triangles.empty())
+          H5Dread(set, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, m.triangles.data());
+        continue;
+      }
+      std::vector<hsize_t> dims;
+      MemberData::Shape s;
+      s.xyz = read_doubles(set, dims);
+      s.dim = dims.size() == 2 ? static_cast<int>(dims[1]) : 1;
+      auto a = read_attributes(set, path);
+      s.kt = a.contains("kt") ? a["kt"].get<double>() : std::nan("");
+      m.shapes.push_back(std::move(s));
+    }
+  }
+  return m;
+}
+
+MemberStatus read_member_status(const std::string& path) {
+  static QuietHdf5 quiet;
+  Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  if (!file.ok()) fail(path, "not a readable HDF5 member file");
+  auto a = read_attributes(file, path);
+  MemberStatus s;
+  if (a.contains("status") && a["status"].is_string()) s.status = a["status"];
+  if (a.contains("member_id") && a["member_id"].is_string()) s.member_id = a["member_id"];
+  return s;
+}
+
+}  // namespace capsule::io

@@ -1,0 +1,85 @@
+#pragma once
+// One HDF5 file per member (CONTRACTS.md, README "Member files").
+// Written to <path>.partial and renamed to <path> when the member ends, so a killed
+// run never leaves a file that looks finished.
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace capsule::io {
+
+class MemberWriter {
+ public:
+  explicit MemberWriter(std::string final_path);
+  MemberWriter(const MemberWriter&) = delete;
+  MemberWriter& operator=(const MemberWriter&) = delete;
+
+  void set_attribute(const std::string& name, const std::string& value);
+  void set_attribute(const std::string& name, const char* value) { set_attribute(name, std::string(value)); }
+  void set_attribute(const std::string& name, double value);
+  void set_attribute(const std::string& name, long value);
+  void set_attribute(const std::string& name, int value) { set_attribute(name, static_cast<long>(value)); }
+  void set_scene(const nlohmann::json& scene);  // attribute "scene", canonical JSON text
+
+  // One output row; every row carries the same keys (the first row fixes them).
+  void append(const std::map<std::string, double>& row, const std::vector<double>& beta = {});
+  void set_markers(const std::map<std::string, double>& markers);
+  void add_shape(double kt, const std::vector<double>& xyz, int dim, const std::vector<int>& triangles = {});
+
+  std::size_t rows() const { return rows_; }
+  const std::string& final_path() const { return final_path_; }
+  std::string partial_path() const { return final_path_ + ".partial"; }
+
+  void checkpoint();                       // rewrite <path>.partial, status "running"
+  void finish(const std::string& status);  // write status, rename .partial -> final
+
+ private:
+  void write(const std::string& path, const std::string& status) const;
+
+  std::string final_path_;
+  std::map<std::string, std::variant<std::string, double, long>> attributes_;
+  std::vector<std::string> columns_;
+  std::map<std::string, std::vector<double>> series_;
+  std::vector<std::vector<double>> beta_;
+  std::map<std::string, double> markers_;
+  struct Shape {
+    double kt;
+    std::vector<double> xyz;
+    int dim;
+  };
+  std::vector<Shape> shapes_;
+  std::vector<int> triangles_;
+  std::size_t rows_ = 0;
+};
+
+struct MemberData {
+  std::string path;
+  std::string status;                 // complete | unstable at kt = X: reason | stopped: reason | running
+  nlohmann::json attributes;          // every root attribute; "scene" parsed into JSON
+  std::map<std::string, std::vector<double>> series;
+  std::vector<std::vector<double>> beta;  // rows x tracked elements
+  std::map<std::string, double> markers;  // NaN where not reached
+  struct Shape {
+    double kt;
+    int dim;
+    std::vector<double> xyz;
+  };
+  std::vector<Shape> shapes;
+  std::vector<int> triangles;
+  bool complete() const { return status == "complete"; }
+  bool unstable() const { return status.rfind("unstable", 0) == 0; }
+};
+
+// Reads a member file (final or .partial). Throws std::runtime_error naming the file.
+MemberData read_member(const std::string& path);
+
+// Status and member id only, cheaply (for planners deciding what to rerun).
+struct MemberStatus {
+  std::string status;
+  std::string member_id;
+};
+MemberStatus read_member_status(const std::string& path);
+
+}  // namespace capsule::io

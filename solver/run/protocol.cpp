@@ -1,0 +1,139 @@
+#include "solver/run/protocol.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <sstream>
+
+namespace capsule {
+namespace {
+constexpr double nan_v = std::numeric_limits<double>::quiet_NaN();
+// Observations come at output intervals: compare times with a small slack so a phase of
+// kt = 5 ends at the row written at kt = 5 even when rounding puts it at 4.999999999.
+constexpr double time_slack = 1e-9;
+
+std::string num(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+}  // namespace
+
+Protocol::Protocol(const Scene& scene)
+    : shear_(scene.shear), recover_(scene.recover),
+      t_max_(nan_v), D_max_(nan_v), t_stop_(nan_v), D_stop_(nan_v),
+      t_min_(nan_v), D_min_(nan_v), t_end_(nan_v), D_inf_(nan_v) {}
+
+double Protocol::shear_factor(double kt) const {
+  if (phase_ != Phase::shear) return 0.0;
+  if (shear_.oscillatory_period_kt > 0) return std::sin(std::numbers::pi * kt / shear_.oscillatory_period_kt);
+  return 1.0;
+}
+
+double Protocol::max_total_kt() const {
+  double s = shear_.until == "time" ? shear_.kt : shear_.max_kt;
+  double r = recover_.until == "time" ? recover_.kt : recover_.max_kt;
+  return s + r;
+}
+
+bool Protocol::steady(double window_kt, double tolerance, double since_kt) const {
+  double now = kt_.back();
+  if (now - since_kt < window_kt - time_slack) return false;
+  double lo = D_.back(), hi = D_.back();
+  for (std::size_t i = kt_.size(); i-- > 0 && kt_[i] >= now - window_kt - time_slack;) {
+    lo = std::min(lo, D_[i]);
+    hi = std::max(hi, D_[i]);
+  }
+  return hi - lo < tolerance;
+}
+
+bool Protocol::crossed(double previous, double current, double value) {
+  // A jump of more than pi is a wrap of the angle, not a crossing.
+  if (std::abs(current - previous) > std::numbers::pi) return false;
+  return (previous - value) * (current - value) <= 0 && previous != value;
+}
+
+void Protocol::observe(double kt, double D, double theta, double beta) {
+  if (phase_ == Phase::done) return;
+  kt_.push_back(kt);
+  D_.push_back(D);
+
+  if (phase_ == Phase::shear) {
+    if (std::isnan(D_max_) || D > D_max_) {
+      D_max_ = D;
+      t_max_ = kt;
+    }
+    bool stop = false;
+    if (shear_.until == "time") {
+      if (kt >= shear_.kt - time_slack) { stop = true; note_ = "shear stopped at kt = " + num(shear_.kt); }
+    } else if (shear_.until == "steady") {
+      if (steady(shear_.window_kt, shear_.tolerance, 0.0)) {
+        stop = true;
+        note_ = "shear stopped when D_xy was steady (range < " + num(shear_.tolerance) + " over " +
+                num(shear_.window_kt) + " kt)";
+      }
+    } else if (shear_.until == "theta") {
+      if (have_prev_ && crossed(prev_theta_, theta, shear_.value)) {
+        stop = true;
+        note_ = "shear stopped when theta reached " + num(shear_.value);
+      }
+    } else if (shear_.until == "beta") {
+      if (have_prev_ && crossed(prev_beta_, beta, shear_.value)) {
+        stop = true;
+        note_ = "shear stopped when beta reached " + num(shear_.value);
+      }
+    }
+    if (!stop && shear_.until != "time" && kt >= shear_.max_kt - time_slack) {
+      stop = true;
+      note_ = "shear stopped at max_kt = " + num(shear_.max_kt) + " before its condition (" + shear_.until + ") was met";
+    }
+    if (stop) {
+      t_stop_ = kt;
+      D_stop_ = D;
+      t_min_ = kt;
+      D_min_ = D;
+      phase_ = Phase::recover;
+      if (recover_.until == "time" && recover_.kt <= 0) {
+        phase_ = Phase::done;
+        t_end_ = kt;
+        D_inf_ = D;
+        note_ += "; no recovery phase";
+      }
+    }
+  } else {  // recover
+    if (D < D_min_) {
+      D_min_ = D;
+      t_min_ = kt;
+    }
+    double since = kt - t_stop_;
+    bool end = false;
+    if (recover_.until == "time") {
+      end = since >= recover_.kt - time_slack;
+      if (end) note_ += "; recovered for " + num(recover_.kt) + " kt";
+    } else if (steady(recover_.window_kt, recover_.tolerance, t_stop_)) {
+      end = true;
+      note_ += "; recovery ended when D_xy settled (range < " + num(recover_.tolerance) + " over " +
+               num(recover_.window_kt) + " kt)";
+    }
+    if (!end && recover_.until != "time" && since >= recover_.max_kt - time_slack) {
+      end = true;
+      note_ += "; recovery ended at max_kt = " + num(recover_.max_kt) + " before D_xy settled";
+    }
+    if (end) {
+      t_end_ = kt;
+      D_inf_ = D;
+      phase_ = Phase::done;
+    }
+  }
+  prev_theta_ = theta;
+  prev_beta_ = beta;
+  have_prev_ = true;
+}
+
+std::map<std::string, double> Protocol::markers() const {
+  return {{"t_max", t_max_}, {"D_max", D_max_}, {"t_stop", t_stop_}, {"D_stop", D_stop_},
+          {"t_min", t_min_}, {"D_min", D_min_}, {"t_end", t_end_}, {"D_inf", D_inf_}};
+}
+
+}  // namespace capsule

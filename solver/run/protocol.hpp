@@ -1,0 +1,50 @@
+#pragma once
+// The protocol of a member (DESIGN 3.6): shear until a condition, then recover until
+// a condition. Dimension-independent: the driver feeds one observation per output
+// interval and asks how fast the walls move. It also keeps the markers the fits need
+// (Sec. 3.1 and 4.1.1): t_max/D_max (largest D_xy under shear), t_stop/D_stop (shear
+// stopped), t_min/D_min (smallest D_xy after the stop), t_end/D_inf (end of recovery).
+#include <map>
+#include <string>
+#include <vector>
+
+#include "solver/scene/scene.hpp"
+
+namespace capsule {
+
+class Protocol {
+ public:
+  explicit Protocol(const Scene& scene);
+
+  // Factor on the wall speeds -+kH/2: 1 under steady shear, sin(pi kt/T) under
+  // oscillatory shear (Sec. 5.2.2), 0 once the shear has stopped.
+  double shear_factor(double kt) const;
+
+  // One observation per output row. Advances the phase and updates the markers.
+  void observe(double kt, double D, double theta, double beta);
+
+  bool shear_on() const { return phase_ == Phase::shear; }
+  bool finished() const { return phase_ == Phase::done; }
+  // Upper bound on the run's length in kt (both phases at their caps).
+  double max_total_kt() const;
+
+  // t_max, D_max, t_stop, D_stop, t_min, D_min, t_end, D_inf; NaN where not reached.
+  std::map<std::string, double> markers() const;
+  // Why the shear stopped and why the run ended, for the member file.
+  std::string phase_note() const { return note_; }
+
+ private:
+  enum class Phase { shear, recover, done };
+  bool steady(double window_kt, double tolerance, double since_kt) const;
+  static bool crossed(double previous, double current, double value);
+
+  PhaseSpec shear_, recover_;
+  Phase phase_ = Phase::shear;
+  std::vector<double> kt_, D_;
+  double prev_theta_ = 0, prev_beta_ = 0;
+  bool have_prev_ = false;
+  double t_max_, D_max_, t_stop_, D_stop_, t_min_, D_min_, t_end_, D_inf_;
+  std::string note_;
+};
+
+}  // namespace capsule

@@ -1,0 +1,116 @@
+// The protocol on synthetic D_xy curves with known answers.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numbers>
+
+#include "solver/run/protocol.hpp"
+
+using capsule::Protocol;
+using capsule::Scene;
+using nlohmann::json;
+
+namespace {
+Scene scene_with(const json& protocol) {
+  json j = {{"dim", 2}, {"shape", "circle"}, {"Ca", 0.05}, {"E_b", 0.0}, {"V", 1.0}, {"eta", 0.0},
+            {"protocol", protocol}};
+  return Scene::from_json(j, "test");
+}
+// Feeds D(t) at dt until the protocol ends or t_cap; returns the last time fed.
+template <class F>
+double drive(Protocol& p, F D, double dt = 0.05, double t_cap = 200) {
+  double kt = 0;
+  for (int i = 0; !p.finished() && kt < t_cap; ++i) {
+    kt = i * dt;
+    p.observe(kt, D(kt, p.shear_on()), 0.0, 0.0);
+  }
+  return kt;
+}
+}  // namespace
+
+TEST_CASE("shear until time, recover for a time: markers at the right rows", "[protocol]") {
+  Protocol p(scene_with({{"shear", {{"until", "time"}, {"kt", 4}}}, {"recover", {{"until", "time"}, {"kt", 3}}}}));
+  CHECK(p.shear_factor(1.0) == 1.0);
+  double t_stop = -1;
+  drive(p, [&](double t, bool on) {
+    if (on) return 0.3 * (1 - std::exp(-t));
+    if (t_stop < 0) t_stop = t;
+    return 0.3 * (1 - std::exp(-4.0)) * std::exp(-(t - 4.0));
+  });
+  auto m = p.markers();
+  CHECK(m["t_stop"] == Approx(4.0));
+  CHECK(m["D_stop"] == Approx(0.3 * (1 - std::exp(-4.0))));
+  CHECK(m["t_max"] == Approx(4.0));  // monotonic rise: the largest value is at the stop
+  CHECK(m["t_end"] == Approx(7.0));
+  CHECK(m["t_min"] == Approx(7.0));  // monotonic decay: the smallest value is at the end
+  CHECK(p.finished());
+  CHECK(p.shear_factor(5.0) == 0.0);
+}
+
+TEST_CASE("steady and settled detection use the stated window and tolerance", "[protocol]") {
+  Protocol p(scene_with({{"shear", {{"until", "steady"}, {"tolerance", 1e-3}, {"window_kt", 2}}},
+                         {"recover", {{"until", "settled"}, {"tolerance", 1e-3}, {"window_kt", 2}}}}));
+  double stop_time = -1;
+  drive(p, [&](double t, bool on) {
+    if (on) return 0.2 * (1 - std::exp(-t));
+    if (stop_time < 0) stop_time = t;
+    return 0.2 * std::exp(-(t - stop_time));
+  });
+  auto m = p.markers();
+  // D rises as 0.2(1 - e^-t): its range over [t-2, t] is 0.2 e^-t (e^2 - 1) < 1e-3 once
+  // t > ln(0.2 (e^2 - 1) / 1e-3) = 7.16, so the stop is at the first output after that.
+  CHECK(m["t_stop"] == Approx(7.2).margin(0.051));
+  CHECK(m["t_end"] - m["t_stop"] == Approx(std::log(0.2 * (std::exp(2.0) - 1) / 1e-3)).margin(0.1));
+  CHECK(m["D_inf"] < 2e-3);
+}
+
+TEST_CASE("two-phase recovery: t_min is the dip before the slow rise (Sec. 4.1.1)", "[protocol]") {
+  Protocol p(scene_with({{"shear", {{"until", "time"}, {"kt", 2}}}, {"recover", {{"until", "time"}, {"kt", 10}}}}));
+  drive(p, [](double t, bool on) {
+    if (on) return 0.9;
+    double s = t - 2.0;  // fast dip to 0.6 then slow return to 0.812
+    return 0.6 + 0.3 * std::exp(-s / 0.2) + 0.212 * (1 - std::exp(-s / 3.0)) - 0.212 * (1 - std::exp(-s / 3.0)) * std::exp(-s / 0.2);
+  });
+  auto m = p.markers();
+  CHECK(m["t_min"] > 2.2);
+  CHECK(m["t_min"] < 3.5);
+  CHECK(m["D_min"] < m["D_stop"]);
+  CHECK(m["D_min"] < m["D_inf"]);
+}
+
+TEST_CASE("angle conditions stop on crossing, not on wrap-around", "[protocol]") {
+  Protocol p(scene_with({{"shear", {{"until", "theta"}, {"value", -std::numbers::pi / 3}}},
+                         {"recover", {{"until", "time"}, {"kt", 1}}}}));
+  // A tumbling inclination falling from pi/4 at 0.5 rad per kt.
+  double kt = 0;
+  for (int i = 0; p.shear_on() && i < 1000; ++i) {
+    kt = 0.05 * i;
+    p.observe(kt, 0.3, std::numbers::pi / 4 - 0.5 * kt, 0.0);
+  }
+  // theta = -pi/3 at kt = (pi/4 + pi/3)/0.5 = 3.665; the first row at or past it is 3.70.
+  CHECK(p.markers()["t_stop"] == Approx(3.70).margin(1e-9));
+
+  Protocol q(scene_with({{"shear", {{"until", "beta"}, {"value", 3.0}}}, {"recover", {{"until", "time"}, {"kt", 1}}}}));
+  q.observe(0.0, 0.1, 0.0, 3.1);
+  q.observe(0.05, 0.1, 0.0, -3.1);  // wrapped from +pi to -pi: not a crossing of 3.0
+  CHECK(q.shear_on());
+  q.observe(0.10, 0.1, 0.0, 2.9);   // wrapped back, still no crossing (jump > pi)
+  q.observe(0.15, 0.1, 0.0, 3.05);  // 2.9 -> 3.05 crosses 3.0
+  CHECK_FALSE(q.shear_on());
+}
+
+TEST_CASE("max_kt ends a phase whose condition never comes, and says so", "[protocol]") {
+  Protocol p(scene_with({{"shear", {{"until", "steady"}, {"max_kt", 3}}}, {"recover", {{"until", "settled"}, {"max_kt", 2}}}}));
+  drive(p, [](double t, bool) { return 0.1 * std::sin(3 * t); });
+  CHECK(p.finished());
+  CHECK(p.markers()["t_stop"] == Approx(3.0));
+  CHECK(p.markers()["t_end"] == Approx(5.0));
+  CHECK_THAT(p.phase_note(), Catch::Contains("max_kt = 3"));
+}
+
+TEST_CASE("oscillatory shear follows sin(pi t / T) (Sec. 5.2.2)", "[protocol]") {
+  Protocol p(scene_with({{"shear", {{"until", "time"}, {"kt", 8}, {"oscillatory_period_kt", 4}}},
+                         {"recover", {{"until", "time"}, {"kt", 1}}}}));
+  CHECK(p.shear_factor(2.0) == Approx(1.0));
+  CHECK(p.shear_factor(6.0) == Approx(-1.0));
+}
