@@ -1,0 +1,177 @@
+#include "analysis/compare.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "analysis/fit_result.hpp"
+#include "analysis/table.hpp"
+#include "analysis/table2_reference.hpp"
+
+namespace capsule::analysis {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct BilinearEntry {
+  std::string campaign, case_name, target;
+  double Ca = NAN, E_b = NAN;
+  FitResult fit;
+};
+
+std::vector<BilinearEntry> read_bilinear(const CompareEntry& e) {
+  const fs::path path = fs::path(e.report_dir) / "fits.json";
+  std::ifstream f(path);
+  if (!f) throw std::runtime_error(path.string() + ": cannot open (run the report first)");
+  nlohmann::json j;
+  try {
+    f >> j;
+  } catch (const nlohmann::json::exception& ex) {
+    throw std::runtime_error(path.string() + ": not valid JSON: " + ex.what());
+  }
+  std::vector<BilinearEntry> out;
+  for (const auto& b : j.value("bilinear", nlohmann::json::array())) {
+    BilinearEntry be;
+    be.campaign = e.name;
+    be.case_name = b.value("case", "");
+    be.target = b.value("target", "");
+    be.Ca = b.contains("Ca") && b["Ca"].is_number() ? b["Ca"].get<double>() : NAN;
+    be.E_b = b.contains("E_b") && b["E_b"].is_number() ? b["E_b"].get<double>() : NAN;
+    be.fit = fit_result_from_json(b.at("fit"));
+    out.push_back(be);
+  }
+  return out;
+}
+
+bool overlap(double lo1, double hi1, double lo2, double hi2) { return lo1 <= hi2 && lo2 <= hi1; }
+
+std::string pm(double v, double hw) { return format_number(v) + " ± " + format_number(hw); }
+
+// Table 2's row names the bare time: "response.k_tau_s" -> "k_tau_s".
+std::string bare_time(const std::string& target) {
+  const auto dot = target.find('.');
+  return dot == std::string::npos ? target : target.substr(dot + 1);
+}
+
+bool same(double x, double y) { return std::abs(x - y) <= 1e-9 * std::max(1.0, std::abs(y)); }  // parsed decimals
+
+}  // namespace
+
+int compare_campaigns(const std::vector<CompareEntry>& entries, bool against_table2, std::ostream& out,
+                      const std::string& out_dir) {
+  std::vector<std::vector<BilinearEntry>> all;
+  bool one_case_each = true;
+  for (const auto& e : entries) {
+    all.push_back(read_bilinear(e));
+    std::map<std::string, int> cases;
+    for (const auto& b : all.back()) cases[b.case_name]++;
+    std::map<std::string, int> per_target;
+    for (const auto& b : all.back()) per_target[b.target]++;
+    for (const auto& [t, n] : per_target)
+      if (n > 1) one_case_each = false;
+  }
+  // Rows are matched by (case, target), or by target alone when every campaign has one case.
+  auto key = [&](const BilinearEntry& b) { return one_case_each ? b.target : b.case_name + " / " + b.target; };
+
+  Table side;
+  side.title = "Bilinear coefficients side by side (difference and overlap against the first campaign)";
+  side.header = {"case / target", "coefficient"};
+  for (const auto& e : entries) side.header.push_back(e.name);
+  if (entries.size() > 1)
+    for (std::size_t i = 1; i < entries.size(); ++i) {
+      side.header.push_back("difference " + entries[i].name + " - " + entries[0].name);
+      side.header.push_back("95% overlap " + entries[i].name);
+    }
+  int status = 0;
+  std::vector<std::string> keys;
+  std::vector<std::map<std::string, const BilinearEntry*>> by_key(all.size());
+  for (std::size_t c = 0; c < all.size(); ++c)
+    for (const auto& b : all[c]) {
+      by_key[c][key(b)] = &b;
+      if (std::find(keys.begin(), keys.end(), key(b)) == keys.end()) keys.push_back(key(b));
+    }
+  for (const auto& k : keys) {
+    for (const char* coef : {"a", "b", "c"}) {
+      std::vector<std::string> row{k, coef};
+      std::vector<const FitParameter*> params;
+      for (std::size_t c = 0; c < all.size(); ++c) {
+        const auto it = by_key[c].find(k);
+        const FitParameter* p = nullptr;
+        if (it == by_key[c].end()) row.push_back("absent");
+        else if (!it->second->fit.ok) row.push_back("n/a: " + it->second->fit.reason);
+        else {
+          p = it->second->fit.parameter(coef);
+          row.push_back(pm(p->value, p->half_width()));
+        }
+        params.push_back(p);
+      }
+      for (std::size_t c = 1; c < all.size(); ++c) {
+        if (!params[0] || !params[c]) {
+          row.insert(row.end(), {"", ""});
+          continue;
+        }
+        const bool ov = overlap(params[0]->ci_low, params[0]->ci_high, params[c]->ci_low, params[c]->ci_high);
+        if (!ov) status = 1;
+        row.push_back(format_number(params[c]->value - params[0]->value));
+        row.push_back(ov ? "yes" : "NO");
+      }
+      side.rows.push_back(row);
+    }
+  }
+
+  fs::create_directories(out_dir);
+  if (keys.empty()) out << "No bilinear fits in these reports (add \"bilinear\" to the analysis block).\n";
+  std::string md = "# Campaign comparison\n\n" + side.to_markdown();
+  std::string csv = side.to_csv();
+  out << side.to_markdown();
+
+  if (against_table2) {
+    Table t2;
+    t2.title = "Against the dissertation's Table 2 (Sec. 5.1.1; ± = 95 % half-width)";
+    t2.header = {"campaign", "case", "target", "Ca", "E_b", "coefficient", "this work", "Table 2", "difference",
+                 "95% overlap"};
+    for (const auto& campaign : all)
+      for (const auto& b : campaign) {
+        const Table2Row* ref = nullptr;
+        for (const auto& r : table2_dissertation())
+          if (r.target == bare_time(b.target) && same(b.Ca, r.Ca) && same(b.E_b, r.E_b)) ref = &r;
+        if (!ref) {
+          t2.rows.push_back({b.campaign, b.case_name, b.target, format_number(b.Ca), format_number(b.E_b), "",
+                             "", "no Table 2 row for this target, Ca and E_b", "", ""});
+          continue;
+        }
+        const std::pair<double, double> refs[] = {
+            {ref->a, ref->a_half_width}, {ref->b, ref->b_half_width}, {ref->c, ref->c_half_width}};
+        const char* names[] = {"a", "b", "c"};
+        for (int i = 0; i < 3; ++i) {
+          const auto [rv, rhw] = refs[i];
+          std::vector<std::string> row{b.campaign, b.case_name, b.target, format_number(b.Ca), format_number(b.E_b),
+                                       names[i]};
+          if (!b.fit.ok) {
+            row.insert(row.end(), {"n/a: " + b.fit.reason, pm(rv, rhw), "", ""});
+          } else {
+            const FitParameter* p = b.fit.parameter(names[i]);
+            const bool ov = overlap(p->ci_low, p->ci_high, rv - rhw, rv + rhw);
+            if (!ov) status = 1;
+            row.insert(row.end(), {pm(p->value, p->half_width()), pm(rv, rhw), format_number(p->value - rv),
+                                   ov ? "yes" : "NO"});
+          }
+          t2.rows.push_back(row);
+        }
+      }
+    md += "\n" + t2.to_markdown();
+    std::ofstream(fs::path(out_dir) / "compare_table2.csv") << t2.to_csv();
+    out << "\n" << t2.to_markdown();
+  }
+  std::ofstream(fs::path(out_dir) / "compare.md") << md;
+  std::ofstream(fs::path(out_dir) / "compare.csv") << csv;
+  return status;
+}
+
+}  // namespace capsule::analysis

@@ -1,0 +1,23 @@
+#pragma once
+// A plain table of text cells written as Markdown, CSV (RFC 4180 quoting) and LaTeX.
+#include <string>
+#include <vector>
+
+namespace capsule::analysis {
+
+struct Table {
+  std::string title;
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+
+  std::string to_markdown() const;
+  std::string to_csv() const;
+  std::string to_latex() const;
+  // Writes <dir>/<stem>.md, .csv, .tex; returns the three paths.
+  std::vector<std::string> write(const std::string& dir, const std::string& stem) const;
+};
+
+// Number formatting shared by every table: 6 significant digits; "" for NaN.
+std::string format_number(double x);
+
+}  // namespace capsule::analysis
