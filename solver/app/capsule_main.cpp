@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
     bool quick = false;
     int threads = 0;
     app.add_option("what", what, "what to benchmark: lbm")->required()->check(CLI::IsMember({"lbm"}));
-    app.add_flag("--quick", quick, "smaller grids and fewer steps");
+    app.add_flag("--quick", quick, "fewer steps per measurement");
     app.add_option("--threads", threads, "largest thread count to try (0 = all cores)");
     CLI11_PARSE(app, argc - 1, argv + 1);
     return capsule::lbm::bench_lbm(quick, threads);

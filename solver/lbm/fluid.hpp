@@ -1,0 +1,120 @@
+#pragma once
+// The lattice Boltzmann fluid (Sec. 2.1, DESIGN 3.1): MRT collision (2) with the
+// body-force scheme (22)-(23), half-way bounce-back moving walls, periodic in x and z.
+//
+// Geometry and units (docs/CONTRACTS.md): dx = dt = 1, rho0 = 1.
+//  - Node (i, j, k) sits at (i + 0.5, j + 0.5, k + 0.5); index = i + nx*(j + ny*k) (x fastest).
+//  - Walls at y = 0 and y = ny (half-way between the last node row and its mirror),
+//    moving in x with u_bottom and u_top; periodic in x (and z).
+//  - nz = 1 for D2Q9. force(2) and velocity(2) exist in 2D and are ignored / zero.
+//
+// Time levels. The state holds the populations f(n) before collision. step() does,
+// in one fused pass over the nodes:
+//    rho(n), u(n) = (sum f c + F/2)/rho (22) from f(n) and the force F filled before step();
+//    collide with F (2), (22)-(23);  stream;  bounce back at the walls with the wall
+//    velocity set before step()  ->  f(n+1).
+// After step(), density() and velocity() hold rho(n) and u(n): the velocity at the
+// time level of the force used in that step (the one the IB interpolates to move
+// the membrane from X(n) to X(n+1), (19)-(20)). The populations are at level n+1.
+// Before the first step they hold the initial fields. The bounce-back of step() n
+// happens between levels n and n+1: a time-dependent wall velocity is best given at
+// t = n + 1/2 (the Stokes-second-problem test does so).
+//
+// Forcing: Peng & Luo as in the text, (22)-(23): j' = j + F/2 enters the equilibrium,
+// the momentum leaves the collision as j + F; no force terms in the other moments.
+// Measured second order (Poiseuille test). Relaxation rates: relaxation.hpp.
+//
+// Known lattice property: the staggered mode u_x ~ (-1)^(x+t) is an equilibrium after
+// every streaming and is never damped. Smooth forces (the IB cosine delta) hardly excite
+// it; a force alternating from node to node does (stop_shear_test measures ~1e-10 U).
+//
+// Viscosity: nu = (1/s_nu - 1/2)/3 (8), (13). A Fluid runs with one uniform viscosity
+// (no per-node array exists) until set_viscosity(node, nu) is called; from then on every
+// node carries its own nu, and only nodes set since the last step get their s_nu
+// recomputed. set_uniform_viscosity() returns to the uniform mode.
+#include <array>
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+#include "solver/lbm/huge_page_allocator.hpp"
+#include "solver/lbm/padded_rows.hpp"
+#include "solver/lbm/lattice.hpp"
+
+namespace capsule::lbm {
+
+template <class L>
+class Fluid {
+ public:
+  static constexpr int Q = L::Q;
+  static constexpr int D = L::D;
+
+  Fluid(int nx, int ny, int nz, double nu);  // nz = 1 for D2Q9; starts at rest, rho = 1
+
+  int nx() const { return nx_; }
+  int ny() const { return ny_; }
+  int nz() const { return nz_; }
+  std::size_t size() const { return n_; }
+  std::size_t index(int x, int y, int z = 0) const {
+    return std::size_t(x) + std::size_t(nx_) * (std::size_t(y) + std::size_t(ny_) * std::size_t(z));
+  }
+
+  // x-velocity of the walls at y = 0 and y = ny, used by the next step().
+  void set_wall_velocity(double u_bottom, double u_top);
+  double wall_velocity_bottom() const { return u_bottom_; }
+  double wall_velocity_top() const { return u_top_; }
+
+  // Equilibrium (5) at rho = 1 with velocity u(x, y, z) at the node centres.
+  void initialise_velocity(const std::function<std::array<double, 3>(double x, double y, double z)>& u);
+
+  double* force(int d) { return force_.data() + std::size_t(d) * n_; }  // body-force density, component d
+  const double* force(int d) const { return force_.data() + std::size_t(d) * n_; }
+  void clear_force();
+
+  void step();
+
+  const double* velocity(int d) const { return velocity_.data() + std::size_t(d) * n_; }
+  const double* density() const { return density_.data(); }
+
+  // Switches on the per-node field on first use; marks the node if nu changed.
+  // Not thread-safe: call from one thread.
+  void set_viscosity(std::size_t node, double nu);
+  void set_uniform_viscosity(double nu);
+  double viscosity(std::size_t node) const;
+  bool has_viscosity_field() const { return !node_viscosity_.empty(); }
+
+  // Sum of all populations (the conserved mass), summed in a fixed order.
+  double total_mass() const;
+
+  // Populations f_i at a node (pre-collision, current level) -- for tests and diagnostics.
+  double population(int i, std::size_t node) const { return f_[population_index(i, node)]; }
+
+ private:
+  void update_marked_rates();
+  // Populations are stored with padded x-rows (PaddedRows in stream_collide.hpp).
+  std::size_t population_index(int i, std::size_t node) const {
+    const std::size_t row = node / std::size_t(nx_), x = node % std::size_t(nx_);
+    return std::size_t(i) * rows_.per_population() + rows_.index(row, x);
+  }
+
+  int nx_, ny_, nz_;
+  std::size_t n_;
+  double nu_;          // uniform viscosity
+  double s_nu_;        // its shear rate
+  double u_bottom_ = 0.0, u_top_ = 0.0;
+  using Field = std::vector<double, HugePageAllocator<double>>;
+  PaddedRows rows_;                     // layout of one population's array
+  Field f_, f_next_;                    // populations, SoA, padded rows
+  Field force_;                         // 3*n
+  Field velocity_;                      // 3*n
+  Field density_;                       // n
+  std::vector<double> node_viscosity_;  // n, empty in the uniform mode
+  std::vector<double> node_shear_rate_; // n, s_nu per node
+  std::vector<char> marked_;            // n, set since the last step
+  std::vector<std::size_t> marked_nodes_;
+};
+
+extern template class Fluid<D2Q9>;
+extern template class Fluid<D3Q19>;
+
+}  // namespace capsule::lbm
