@@ -1,0 +1,198 @@
+#include "study/campaign_runner.hpp"
+
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstring>
+#include <fcntl.h>
+#include <fstream>
+#include <stdexcept>
+#include <sys/file.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+#include "study/capsule_binary.hpp"
+#include "study/concurrency.hpp"
+#include "study/joblog.hpp"
+#include "study/member_wrapper.hpp"
+#include "study/run_record.hpp"
+
+namespace capsule::study {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Holds an exclusive flock on results/<campaign>/.lock. The descriptor is inherited by
+// GNU Parallel and every member it starts, so the lock stays held while any member of
+// this run is alive, even if `study` itself is killed; a second `study run` of the
+// same campaign is refused until then.
+class CampaignLock {
+ public:
+  explicit CampaignLock(const fs::path& path) {
+    fd_ = ::open(path.c_str(), O_RDWR | O_CREAT, 0644);
+    if (fd_ < 0) throw std::runtime_error("cannot open " + path.string() + ": " + std::strerror(errno));
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+      ::close(fd_);
+      throw std::runtime_error("another `study run` of this campaign (or members it started) is still running: " +
+                               path.string() + " is locked");
+    }
+  }
+  ~CampaignLock() { ::close(fd_); }
+  CampaignLock(const CampaignLock&) = delete;
+  CampaignLock& operator=(const CampaignLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
+volatile sig_atomic_t child_pid = 0;
+
+// SIGTERM to study is passed on to GNU Parallel (which then stops starting members and
+// ends), so `kill <study pid>` still ends in a summary.
+extern "C" void forward_sigterm(int) {
+  if (child_pid > 0) ::kill(static_cast<pid_t>(child_pid), SIGTERM);
+}
+
+// Runs argv (no shell) and waits. Ctrl-C reaches GNU Parallel through the terminal's
+// process group; study ignores it meanwhile so it can still print the summary.
+int run_and_wait(const std::vector<std::string>& argv) {
+  std::vector<char*> args;
+  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  struct sigaction ignore {}, forward {}, old_int {}, old_term {};
+  ignore.sa_handler = SIG_IGN;
+  forward.sa_handler = forward_sigterm;
+  sigaction(SIGINT, &ignore, &old_int);
+  sigaction(SIGTERM, &forward, &old_term);
+  const pid_t pid = ::fork();
+  if (pid < 0) throw std::runtime_error(std::string("fork failed: ") + std::strerror(errno));
+  if (pid == 0) {
+    sigaction(SIGINT, &old_int, nullptr);
+    sigaction(SIGTERM, &old_term, nullptr);
+    ::execvp(args[0], args.data());
+    std::fprintf(stderr, "study: cannot run %s: %s\n", args[0], std::strerror(errno));
+    ::_exit(127);
+  }
+  child_pid = pid;
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  child_pid = 0;
+  sigaction(SIGINT, &old_int, nullptr);
+  sigaction(SIGTERM, &old_term, nullptr);
+  if (WIFEXITED(status)) return WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
+  return 1;
+}
+
+}  // namespace
+
+void print_status(const CampaignSurvey& survey, std::ostream& out) {
+  out << "campaign " << survey.campaign.name << ": " << survey.members.size() << " members in "
+      << survey.layout.root.string() << "\n";
+  for (auto state : {MemberState::complete, MemberState::fresh, MemberState::interrupted, MemberState::unstable,
+                     MemberState::stopped, MemberState::failed})
+    out << "  " << state_name(state) << ": " << survey.count(state) << "\n";
+  for (std::size_t i = 0; i < survey.members.size(); ++i) {
+    const auto& c = survey.conditions[i];
+    if (c.state == MemberState::complete || c.state == MemberState::fresh) continue;
+    out << "  [" << state_name(c.state) << "] " << survey.members[i].dir_name() << ": " << c.reason << "\n";
+  }
+  if (survey.count(MemberState::interrupted) + survey.count(MemberState::fresh) + survey.count(MemberState::failed) +
+          survey.count(MemberState::stopped) >
+      0)
+    out << "  (`study run` again runs what is not complete; complete members are kept)\n";
+}
+
+RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
+  CampaignSurvey survey = survey_campaign(request.campaign_file, request.results_dir);
+  const fs::path capsule_binary = find_capsule_binary();
+  // The job list has one member directory per line.
+  if (survey.layout.root.string().find('\n') != std::string::npos)
+    throw std::runtime_error("the results folder's path contains a line break: " + survey.layout.root.string());
+  fs::create_directories(survey.layout.root);
+  CampaignLock lock(survey.layout.lock_file());
+  prepare_member_directories(survey);
+
+  std::vector<std::size_t> to_run;
+  bool any_3d = false;
+  for (std::size_t i = 0; i < survey.members.size(); ++i) {
+    if (!needs_run(survey.conditions[i], request.rerun_unstable)) continue;
+    to_run.push_back(i);
+    any_3d = any_3d || survey.members[i].scene.at("dim").get<int>() == 3;
+  }
+
+  nlohmann::json record = run_record_start(survey.campaign.name, request.campaign_file);
+  record["capsule_binary"] = capsule_binary.string();
+  record["members"] = survey.members.size();
+  record["to_run"] = to_run.size();
+
+  RunOutcome outcome;
+  if (!to_run.empty()) {
+    const Concurrency conc =
+        choose_concurrency(usable_cores(), static_cast<int>(to_run.size()), any_3d, request.jobs, request.threads);
+    record["jobs"] = conc.jobs;
+    record["threads"] = conc.threads;
+    record["hosts_file"] = request.hosts_file;
+
+    std::string job_list;
+    for (std::size_t i : to_run) {
+      const MemberPaths p = survey.layout.member(survey.members[i]);
+      clear_for_rerun(p);  // a stale .partial or failed attempt is rerun from scratch
+      job_list += p.dir.string() + "\n";
+    }
+    write_file_atomically(survey.layout.jobs_file(), job_list);
+    write_member_wrapper(survey.layout.wrapper(), capsule_binary, survey.campaign.name);
+    write_file_atomically(survey.layout.run_json(), record.dump(2) + "\n");
+
+    // No --halt: a failed member never stops the others. -q quotes the command words
+    // (wrapper path, member dir, threads), so no user string reaches a shell unquoted.
+    std::vector<std::string> argv{"parallel", "--will-cite", "--joblog", survey.layout.joblog().string(),
+                                  "--jobs", std::to_string(conc.jobs)};
+    if (request.progress_bar) argv.push_back("--bar");
+    if (!request.hosts_file.empty()) {
+      argv.insert(argv.end(), {"--sshloginfile", fs::absolute(request.hosts_file).string()});
+      if (!request.ssh_command.empty()) argv.insert(argv.end(), {"--ssh", request.ssh_command});
+    }
+    argv.insert(argv.end(), {"--arg-file", survey.layout.jobs_file().string(), "-q",
+                             survey.layout.wrapper().string(), "{}", std::to_string(conc.threads)});
+
+    out << "running " << to_run.size() << " of " << survey.members.size() << " members (" << conc.jobs
+        << " at once" << (request.hosts_file.empty() ? "" : " per host") << " x " << conc.threads << " thread"
+        << (conc.threads > 1 ? "s" : "") << ")\n"
+        << std::flush;
+    const auto start = std::chrono::steady_clock::now();
+    const int parallel_status = run_and_wait(argv);
+    outcome.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    outcome.ran = to_run.size();
+    for (const auto& e : read_joblog(survey.layout.joblog())) outcome.member_seconds += e.runtime;
+    record["parallel_exit_status"] = parallel_status;
+  } else {
+    out << "nothing to run: every member is finished\n";
+  }
+
+  // The verdict comes from the members' own files.
+  for (std::size_t i = 0; i < survey.members.size(); ++i)
+    survey.conditions[i] = inspect_member(survey.layout.member(survey.members[i]), survey.members[i].id);
+  print_status(survey, out);
+  if (outcome.ran > 0)
+    out << "wall " << outcome.wall_seconds << " s for " << outcome.member_seconds
+        << " s of member run time (concurrency " << (outcome.wall_seconds > 0 ? outcome.member_seconds / outcome.wall_seconds : 0)
+        << ")\n";
+  outcome.exit_code = survey.count(MemberState::complete) == survey.members.size() ? 0 : 1;
+
+  record["finished"] = utc_now_iso8601();
+  record["wall_seconds"] = outcome.wall_seconds;
+  record["member_seconds"] = outcome.member_seconds;
+  nlohmann::json counts;
+  for (auto state : {MemberState::complete, MemberState::fresh, MemberState::interrupted, MemberState::unstable,
+                     MemberState::stopped, MemberState::failed})
+    counts[state_name(state)] = survey.count(state);
+  record["counts"] = counts;
+  write_file_atomically(survey.layout.run_json(), record.dump(2) + "\n");
+  return outcome;
+}
+
+}  // namespace capsule::study

@@ -1,0 +1,37 @@
+#pragma once
+// `study run`: prepares member directories, hands every member that is not complete to
+// GNU Parallel (one job per member directory, from a generated job file), waits, and
+// summarises from the members' own files. Resumable: rerun it after an interruption and
+// only incomplete members run again, from scratch.
+#include <filesystem>
+#include <ostream>
+#include <string>
+
+#include "study/campaign_survey.hpp"
+
+namespace capsule::study {
+
+struct RunRequest {
+  std::string campaign_file;
+  std::filesystem::path results_dir = "results";
+  int jobs = 0;                  // 0: chosen (concurrency.hpp)
+  int threads = 0;               // 0: chosen
+  std::string hosts_file;        // GNU Parallel --sshloginfile (shared filesystem assumed)
+  std::string ssh_command;       // GNU Parallel --ssh (default: ssh)
+  bool rerun_unstable = false;   // also rerun members whose file says unstable
+  bool progress_bar = false;     // --bar (the app sets it when stdout is a terminal)
+};
+
+struct RunOutcome {
+  int exit_code = 0;            // 0 when every member is complete, 1 otherwise
+  std::size_t ran = 0;          // members handed to GNU Parallel
+  double wall_seconds = 0;      // GNU Parallel's wall time
+  double member_seconds = 0;    // sum of the joblog's JobRuntime over the members run
+};
+
+RunOutcome run_campaign(const RunRequest& request, std::ostream& out);
+
+// Prints counts per state and every member that is not complete, with its reason.
+void print_status(const CampaignSurvey& survey, std::ostream& out);
+
+}  // namespace capsule::study

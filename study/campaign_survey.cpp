@@ -1,0 +1,50 @@
+#include "study/campaign_survey.hpp"
+
+#include <fstream>
+#include <sstream>
+
+namespace capsule::study {
+
+namespace fs = std::filesystem;
+
+std::size_t CampaignSurvey::count(MemberState state) const {
+  std::size_t n = 0;
+  for (const auto& c : conditions) n += c.state == state;
+  return n;
+}
+
+CampaignSurvey survey_campaign(const std::string& campaign_file, const fs::path& results_dir) {
+  Campaign campaign = load_campaign(campaign_file);
+  std::vector<Member> members = expand_campaign(campaign);
+  ResultsLayout layout(results_dir, campaign.name);
+  std::vector<MemberCondition> conditions;
+  conditions.reserve(members.size());
+  for (const auto& m : members) conditions.push_back(inspect_member(layout.member(m), m.id));
+  return CampaignSurvey{std::move(campaign), std::move(members), std::move(layout), std::move(conditions)};
+}
+
+namespace {
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+}  // namespace
+
+void prepare_member_directories(const CampaignSurvey& survey) {
+  fs::create_directories(survey.layout.members_dir());
+  write_file_atomically(survey.layout.campaign_json(), survey.campaign.text);
+  for (const auto& m : survey.members) {
+    const MemberPaths p = survey.layout.member(m);
+    fs::create_directories(p.dir);
+    const std::string text = m.scene.dump(2) + "\n";
+    if (!fs::exists(p.scene) || read_text(p.scene) != text) write_file_atomically(p.scene, text);
+  }
+}
+
+void clear_for_rerun(const MemberPaths& paths) {
+  for (const auto& p : {paths.h5, paths.partial, paths.exit_status, paths.log}) fs::remove(p);
+}
+
+}  // namespace capsule::study

@@ -1,0 +1,33 @@
+#pragma once
+// A campaign file read, expanded, and matched against what its results folder holds:
+// the common first step of plan, run, status, export and report. Read-only.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "study/campaign.hpp"
+#include "study/expansion.hpp"
+#include "study/member_state.hpp"
+#include "study/results_layout.hpp"
+
+namespace capsule::study {
+
+struct CampaignSurvey {
+  Campaign campaign;
+  std::vector<Member> members;
+  ResultsLayout layout;
+  std::vector<MemberCondition> conditions;  // one per member
+
+  std::size_t count(MemberState state) const;
+};
+
+CampaignSurvey survey_campaign(const std::string& campaign_file, const std::filesystem::path& results_dir);
+
+// Creates every member directory and writes its scene.json (when missing or different),
+// and records the campaign file as run (campaign.json).
+void prepare_member_directories(const CampaignSurvey& survey);
+
+// Clears what a rerun replaces: member.h5 (if not complete), .partial, exit_status, capsule.log.
+void clear_for_rerun(const MemberPaths& paths);
+
+}  // namespace capsule::study

@@ -1,0 +1,35 @@
+#pragma once
+// What a member's own files say about it. Completion is decided here, per member, from
+// its member file (status "complete" and the expected member_id) -- never from GNU
+// Parallel's joblog.
+#include <string>
+
+#include "study/results_layout.hpp"
+
+namespace capsule::study {
+
+enum class MemberState {
+  fresh,        // nothing run yet
+  interrupted,  // only member.h5.partial: killed while running
+  complete,     // member.h5 with status "complete" and this member's id
+  unstable,     // member.h5 with status "unstable at kt = X: reason"
+  stopped,      // member.h5 with status "stopped: reason" (the solver threw; capsule exit 1)
+  failed,       // the capsule exited non-zero without a member file, or the file is unreadable / foreign
+};
+
+struct MemberCondition {
+  MemberState state = MemberState::fresh;
+  std::string reason;  // for unstable / stopped / failed / interrupted
+};
+
+const char* state_name(MemberState state);  // "new", "interrupted", "complete", ...
+
+// Reads member.h5 (status and member_id only), else exit_status and the end of capsule.log.
+MemberCondition inspect_member(const MemberPaths& paths, const std::string& expected_id);
+
+// True when `study run` must (re)run the member: everything except complete, and except
+// unstable unless rerun_unstable (same id = same scene and physics = same blow-up; a
+// failed or stopped member may have met a transient problem, so it is retried).
+bool needs_run(const MemberCondition& condition, bool rerun_unstable);
+
+}  // namespace capsule::study

@@ -1,0 +1,42 @@
+#pragma once
+// Where a campaign's results live:
+//   <results>/<campaign>/campaign.json      the campaign file as last run
+//   <results>/<campaign>/run.json           code version, host, jobs x threads, times, summary
+//   <results>/<campaign>/joblog             GNU Parallel's --joblog of the last run
+//   <results>/<campaign>/jobs               the job list handed to GNU Parallel (member dirs)
+//   <results>/<campaign>/run_member.sh      the generated wrapper that runs one member
+//   <results>/<campaign>/members/<slug>-<id>/{scene.json, member.h5, capsule.log, exit_status}
+//   <results>/<campaign>/slurm/             `study export --slurm` output
+//   <results>/<campaign>/report/            `study report` output
+#include <filesystem>
+#include <string>
+
+#include "study/expansion.hpp"
+
+namespace capsule::study {
+
+struct MemberPaths {
+  std::filesystem::path dir, scene, h5, partial, log, exit_status;
+};
+
+struct ResultsLayout {
+  std::filesystem::path root;  // absolute <results>/<campaign>
+
+  ResultsLayout(const std::filesystem::path& results_dir, const std::string& campaign_name);
+
+  std::filesystem::path campaign_json() const { return root / "campaign.json"; }
+  std::filesystem::path run_json() const { return root / "run.json"; }
+  std::filesystem::path joblog() const { return root / "joblog"; }
+  std::filesystem::path jobs_file() const { return root / "jobs"; }
+  std::filesystem::path wrapper() const { return root / "run_member.sh"; }
+  std::filesystem::path lock_file() const { return root / ".lock"; }
+  std::filesystem::path members_dir() const { return root / "members"; }
+  std::filesystem::path slurm_dir() const { return root / "slurm"; }
+  std::filesystem::path report_dir() const { return root / "report"; }
+  MemberPaths member(const Member& m) const;
+};
+
+// Writes text to path atomically (temporary file in the same folder, then rename).
+void write_file_atomically(const std::filesystem::path& path, const std::string& text);
+
+}  // namespace capsule::study

@@ -1,0 +1,37 @@
+#include "study/run_record.hpp"
+
+#include <chrono>
+#include <ctime>
+#include <filesystem>
+#include <unistd.h>
+
+#include "build_info.hpp"
+#include "solver/scene/version.hpp"
+
+namespace capsule::study {
+
+std::string host_name() {
+  char name[256] = {};
+  if (::gethostname(name, sizeof name - 1) != 0) return "unknown";
+  return name;
+}
+
+std::string utc_now_iso8601() {
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return text;
+}
+
+nlohmann::json run_record_start(const std::string& campaign_name, const std::string& campaign_file) {
+  return {{"campaign", campaign_name},
+          {"campaign_file", std::filesystem::absolute(campaign_file).string()},
+          {"code_version", capsule::build::code_version},
+          {"physics_version", capsule::physics_version},
+          {"host", host_name()},
+          {"started", utc_now_iso8601()}};
+}
+
+}  // namespace capsule::study

@@ -1,0 +1,48 @@
+// Every campaign shipped in campaigns/ parses, expands and plans without error.
+#include <catch2/catch.hpp>
+
+#include "study/campaign_survey.hpp"
+#include "study/cost_estimate.hpp"
+#include "study/plan_table.hpp"
+#include "tests/study/study_test_support.hpp"
+
+using namespace capsule::study;
+namespace fs = std::filesystem;
+
+TEST_CASE("every campaign file plans without error", "[study]") {
+  const fs::path campaigns = fs::path(CAPSULE_SOURCE_DIR) / "campaigns";
+  const fs::path results = testing::scratch_dir("plan_all");
+  std::size_t files = 0;
+  for (const auto& entry : fs::directory_iterator(campaigns)) {
+    if (entry.path().extension() != ".json") continue;
+    ++files;
+    INFO(entry.path().string());
+    std::ostringstream out;
+    CHECK_NOTHROW(print_plan(survey_campaign(entry.path().string(), results), out));
+    const CampaignSurvey s = survey_campaign(entry.path().string(), results);
+    CHECK(s.members.size() >= 1);
+    CHECK(s.campaign.name == entry.path().stem().string());  // results/<name> matches the file name
+    for (const auto& m : s.members) CHECK(estimate_cost(m.scene).nodes > 0);
+  }
+  CHECK(files >= 19);  // demo + the 18 campaigns of DESIGN section 5
+  CHECK_FALSE(fs::exists(results / "demo"));  // planning wrote nothing
+  fs::remove_all(results);
+}
+
+TEST_CASE("study plan prints every member and changes nothing", "[study]") {
+  const fs::path dir = testing::scratch_dir("plan_cli");
+  testing::write_text(dir / "c.json", testing::tiny_campaign("plan", {0.01, 0.02}, 1, 1).dump());
+  const auto plan = testing::run_study({"plan", "c.json"}, dir);
+  INFO(plan.output);
+  CHECK(plan.exit_code == 0);
+  CHECK(plan.output.find("Ca0.01-") != std::string::npos);
+  CHECK(plan.output.find("Ca0.02-") != std::string::npos);
+  CHECK(plan.output.find("2 members: 0 complete, 2 new") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "results"));
+
+  testing::write_text(dir / "bad.json", R"({"name": "x", "base": {}, "extra": 1})");
+  const auto bad = testing::run_study({"plan", "bad.json"}, dir);
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.output.find("bad.json: extra: unknown key") != std::string::npos);
+  fs::remove_all(dir);
+}

@@ -1,0 +1,65 @@
+// A failed and an unstable member never stop the others; status names both with reasons.
+#include <catch2/catch.hpp>
+
+#include "study/campaign_survey.hpp"
+#include "tests/study/study_test_support.hpp"
+
+using namespace capsule::study;
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+TEST_CASE("failed and unstable members do not stop the others", "[study]") {
+  const fs::path dir = testing::scratch_dir("isolation");
+  json doc = testing::tiny_campaign("isolation", {0.05}, 1, 1);
+  doc["cases"] = json::array({
+      {{"name", "ok"}, {"sweep", {{"grid", {{"Ca", {0.02, 0.05}}}}}}},
+      // Ca = 10 (the largest a scene allows: a membrane 200 times softer than Ca = 0.05)
+      // sheared for kt 6: the segments collapse and the solver's health check ends the
+      // member as "unstable at kt = ..." (measured: within kt 3 at a = 4).
+      {{"name", "soft"}, {"set", {{"protocol.shear.kt", 6.0}}}, {"sweep", {{"grid", {{"Ca", {10.0}}}}}}},
+      // The 3D driver refuses a power-law membrane (not implemented in 3D): the capsule ends
+      // the member "stopped: ..." with exit status 1 before any time step.
+      {{"name", "refused"},
+       {"set", {{"dim", 3}, {"shape", "sphere"}, {"power_law", {{"K", 0.1}, {"n", 0.64}}},
+                {"resolution", {{"a", 4}, {"mesh_level", 1}}}}}},
+  });
+  testing::write_text(dir / "c.json", doc.dump(2));
+
+  const auto run = testing::run_study({"run", "c.json", "--jobs", "2", "--threads", "1"}, dir);
+  INFO(run.output);
+  CHECK(run.exit_code != 0);  // not every member completed
+
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  REQUIRE(s.members.size() == 4);
+  CHECK(s.count(MemberState::complete) == 2);
+  CHECK(s.conditions[2].state == MemberState::unstable);
+  CHECK(s.conditions[2].reason.find("unstable at kt =") != std::string::npos);
+  CHECK(s.conditions[3].state == MemberState::stopped);
+  CHECK(s.conditions[3].reason.find("not implemented") != std::string::npos);
+
+  const auto status = testing::run_study({"status", "c.json"}, dir);
+  INFO(status.output);
+  CHECK(status.output.find("complete: 2") != std::string::npos);
+  CHECK(status.output.find("[unstable] " + s.members[2].dir_name() + ": unstable at kt =") != std::string::npos);
+  CHECK(status.output.find("[stopped] " + s.members[3].dir_name() + ": stopped: ") != std::string::npos);
+
+  // Rerun: the unstable member is final (same id, same outcome) and not rerun; the stopped
+  // one is retried; the complete ones are kept.
+  const auto rerun = testing::run_study({"run", "c.json"}, dir);
+  INFO(rerun.output);
+  CHECK(rerun.output.find("running 1 of 4 members") != std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a capsule that exits without a member file is reported failed with its log", "[study]") {
+  // CAPSULE_BIN pointing at /bin/false: the wrapper records exit status 1 and no file.
+  const fs::path dir = testing::scratch_dir("nofile");
+  testing::write_text(dir / "c.json", testing::tiny_campaign("nofile", {0.05}, 1, 1).dump());
+  const auto run = testing::run_shell("cd '" + dir.string() + "' && CAPSULE_BIN=/bin/false '" +
+                                      testing::study_binary().string() + "' run c.json </dev/null");
+  INFO(run.output);
+  CHECK(run.exit_code == 1);
+  CHECK(run.output.find("[failed] ") != std::string::npos);
+  CHECK(run.output.find("solver failure") != std::string::npos);
+  fs::remove_all(dir);
+}
