@@ -1,0 +1,29 @@
+#pragma once
+// The Eulerian lattice as the immersed boundary sees it (CONTRACTS.md "Lattice units"):
+// node (i, j, k) sits at (i + 1/2, j + 1/2, k + 1/2), dx = 1; periodic in x (and z),
+// walls at y = 0 and y = ny. Linear index i + nx (j + ny k): x runs fastest, as in
+// capsule::lbm::Fluid::index.
+#include <cstddef>
+
+namespace capsule::ib {
+
+struct Grid {
+  int nx = 1, ny = 1, nz = 1;  // nz = 1 in 2D
+
+  std::size_t size() const { return static_cast<std::size_t>(nx) * ny * nz; }
+  std::size_t index(int i, int j, int k = 0) const {
+    return static_cast<std::size_t>(i) + static_cast<std::size_t>(nx) * (static_cast<std::size_t>(j) + static_cast<std::size_t>(ny) * k);
+  }
+  // Extent along axis d (0 = x, 1 = y, 2 = z).
+  int extent(int d) const { return d == 0 ? nx : (d == 1 ? ny : nz); }
+  // Axis d is periodic (x and z) or bounded by walls (y).
+  static constexpr bool periodic(int d) { return d != 1; }
+};
+
+// Wraps a periodic index into [0, n).
+inline int wrap(int i, int n) {
+  i %= n;
+  return i < 0 ? i + n : i;
+}
+
+}  // namespace capsule::ib

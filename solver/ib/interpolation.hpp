@@ -1,0 +1,99 @@
+#pragma once
+// Immersed-boundary transfer between Lagrangian membrane nodes and the lattice (Sec. 2.3),
+// for Dim = 2 or 3, on plain arrays so the 2D and 3D membranes share it:
+//
+//   interpolate<Dim>(grid, u, X, n, U, kernel)   U(X_c) = sum_j delta(X_c - x_j) u(x_j)   (19)
+//   advance<Dim>(X, U, n, dt)                    X_c += U(X_c) dt  (forward Euler)        (20)
+//   spread<Dim>(grid, X, P, n, p, kernel)        p(x_j) += sum_c delta(X_c - x_j) P(X_c)  (21)
+// kernel: Kernel::cosine (18, the default) or Kernel::peskin4 (see delta.hpp for why the 2D
+// driver uses peskin4); use the same kernel for both directions.
+//
+// X, U, P: node-major arrays of n * Dim doubles (x0, y0[, z0], x1, ...), positions in
+// lattice coordinates (node (i, j, k) at (i + 1/2, j + 1/2, k + 1/2)).
+// u, p: Dim pointers to lattice component arrays (SoA) of grid.size() doubles, indexed
+// grid.index(i, j, k) (x fastest), e.g. {fluid.velocity(0), fluid.velocity(1)}.
+// Each node touches only the 4^Dim lattice nodes of its delta support: O(n 4^Dim) work.
+// x (and z) wrap periodically; nodes beyond the walls (j < 0 or j >= ny) are dropped
+// (the kernel is clipped there; a capsule kept a few nodes away from the walls never sees it).
+// spread() adds to p; clear p first (Fluid::clear_force) when starting a step.
+#include <cstddef>
+
+#include "solver/ib/delta.hpp"
+#include "solver/ib/grid.hpp"
+
+namespace capsule::ib {
+
+// Calls visit(lattice_index, weight) for every lattice node in the support of the
+// delta centred at X (Dim coordinates), with walls and periodicity applied.
+template <int Dim, class Visit>
+inline void for_each_support_node(const Grid& grid, const double* X, Kernel kernel, Visit&& visit) {
+  static_assert(Dim == 2 || Dim == 3, "2D or 3D");
+  const DeltaStencil1D sx = delta_stencil(X[0], kernel);
+  const DeltaStencil1D sy = delta_stencil(X[1], kernel);
+  int ix[4];
+  for (int m = 0; m < 4; ++m) ix[m] = wrap(sx.first + m, grid.nx);
+  if constexpr (Dim == 2) {
+    for (int b = 0; b < 4; ++b) {
+      const int j = sy.first + b;
+      if (j < 0 || j >= grid.ny) continue;
+      const std::size_t row = static_cast<std::size_t>(grid.nx) * j;
+      for (int m = 0; m < 4; ++m) visit(row + ix[m], sx.w[m] * sy.w[b]);
+    }
+  } else {
+    const DeltaStencil1D sz = delta_stencil(X[2], kernel);
+    for (int c = 0; c < 4; ++c) {
+      const int k = wrap(sz.first + c, grid.nz);
+      for (int b = 0; b < 4; ++b) {
+        const int j = sy.first + b;
+        if (j < 0 || j >= grid.ny) continue;
+        const std::size_t row = grid.index(0, j, k);
+        const double wyz = sy.w[b] * sz.w[c];
+        for (int m = 0; m < 4; ++m) visit(row + ix[m], sx.w[m] * wyz);
+      }
+    }
+  }
+}
+
+// (19): velocity of n membrane nodes from the lattice velocity u[0..Dim-1].
+template <int Dim>
+void interpolate(const Grid& grid, const double* const* u, const double* X, std::size_t n, double* U,
+                 Kernel kernel = Kernel::cosine) {
+  for (std::size_t c = 0; c < n; ++c) {
+    double acc[Dim] = {};
+    for_each_support_node<Dim>(grid, X + Dim * c, kernel, [&](std::size_t node, double w) {
+      for (int d = 0; d < Dim; ++d) acc[d] += w * u[d][node];
+    });
+    for (int d = 0; d < Dim; ++d) U[Dim * c + d] = acc[d];
+  }
+}
+
+// (20): forward Euler position update.
+template <int Dim>
+void advance(double* X, const double* U, std::size_t n, double dt) {
+  for (std::size_t i = 0; i < Dim * n; ++i) X[i] += U[i] * dt;
+}
+
+// (21): adds the nodal forces P (already integrated over each node's share of the
+// membrane) to the lattice body-force density p[0..Dim-1] (dx = 1, so force = density).
+template <int Dim>
+void spread(const Grid& grid, const double* X, const double* P, std::size_t n, double* const* p,
+            Kernel kernel = Kernel::cosine) {
+  for (std::size_t c = 0; c < n; ++c) {
+    const double* Pc = P + Dim * c;
+    for_each_support_node<Dim>(grid, X + Dim * c, kernel, [&](std::size_t node, double w) {
+      for (int d = 0; d < Dim; ++d) p[d][node] += w * Pc[d];
+    });
+  }
+}
+
+// Sets p to zero on the support of the nodes X: undoes a spread() from the same positions
+// in O(n 4^Dim) instead of clearing the whole lattice.
+template <int Dim>
+void clear_support(const Grid& grid, const double* X, std::size_t n, double* const* p, Kernel kernel = Kernel::cosine) {
+  for (std::size_t c = 0; c < n; ++c)
+    for_each_support_node<Dim>(grid, X + Dim * c, kernel, [&](std::size_t node, double) {
+      for (int d = 0; d < Dim; ++d) p[d][node] = 0.0;
+    });
+}
+
+}  // namespace capsule::ib

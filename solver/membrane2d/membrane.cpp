@@ -1,0 +1,117 @@
+#include "solver/membrane2d/membrane.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "solver/membrane2d/arc_derivative.hpp"
+
+namespace capsule::membrane2d {
+
+Membrane::Membrane(std::vector<double> xy, Moduli moduli) : n_(xy.size() / 2), xy_(std::move(xy)), moduli_(moduli) {
+  if (n_ < 5) throw std::invalid_argument("Membrane: need at least 5 nodes");
+  l_.assign(n_, 0.0);
+  fit_geometry();
+  l0_ = l_;
+  kappa0_ = spline_.curvatures();
+  lambda_.assign(n_, 1.0);
+  tau_.assign(n_, 0.0);
+  m_.assign(n_, 0.0);
+  q_.assign(n_, 0.0);
+  force_.assign(2 * n_, 0.0);
+}
+
+void Membrane::fit_geometry() {
+  for (std::size_t i = 0; i < n_; ++i) {
+    const std::size_t j = (i + 1) % n_;
+    l_[i] = std::hypot(xy_[2 * j] - xy_[2 * i], xy_[2 * j + 1] - xy_[2 * i + 1]);
+  }
+  spline_.fit(xy_);
+}
+
+void Membrane::compute_forces(double dt, bool advance_history) {
+  fit_geometry();
+  for (std::size_t i = 0; i < n_; ++i) lambda_[i] = l_[i] / l0_[i];  // (29)
+  // (31): d lambda / dt by the one-sided second-order difference (3 l - 4 l1 + l2) / (2 dt),
+  // first order on the second step, zero on the first (the membrane starts at rest).
+  for (std::size_t i = 0; i < n_; ++i) {
+    double rate = 0.0;
+    if (history_ >= 2)
+      rate = (3.0 * lambda_[i] - 4.0 * lambda_prev1_[i] + lambda_prev2_[i]) / (2.0 * dt);
+    else if (history_ == 1)
+      rate = (lambda_[i] - lambda_prev1_[i]) / dt;
+    tau_[i] = moduli_.E_s * (lambda_[i] - 1.0) + moduli_.mu_s * rate / lambda_[i];  // (28), (30), (31)
+  }
+  if (advance_history) {
+    lambda_prev2_.swap(lambda_prev1_);
+    lambda_prev1_ = lambda_;
+    history_ = std::min(history_ + 1, 2);
+  }
+  const auto& kappa = spline_.curvatures();
+  for (std::size_t i = 0; i < n_; ++i) m_[i] = moduli_.E_B * (kappa[i] - kappa0_[i]);  // (32)
+  // Segment tension vectors T_i = tau_i t_i + q_i n_i, q_i = (m_{i+1} - m_i) / l_i (32).
+  std::vector<double> T(2 * n_);
+  for (std::size_t i = 0; i < n_; ++i) {
+    const std::size_t j = (i + 1) % n_;
+    const double tx = (xy_[2 * j] - xy_[2 * i]) / l_[i], ty = (xy_[2 * j + 1] - xy_[2 * i + 1]) / l_[i];
+    q_[i] = (m_[j] - m_[i]) / l_[i];
+    // n = (ty, -tx): outward for counter-clockwise nodes
+    T[2 * i] = tau_[i] * tx + q_[i] * ty;
+    T[2 * i + 1] = tau_[i] * ty - q_[i] * tx;
+  }
+  // F_i = T_i - T_{i-1}: (27) integrated over node i's share of the membrane, sign for the fluid.
+  for (std::size_t i = 0; i < n_; ++i) {
+    const std::size_t k = (i + n_ - 1) % n_;
+    force_[2 * i] = T[2 * i] - T[2 * k];
+    force_[2 * i + 1] = T[2 * i + 1] - T[2 * k + 1];
+  }
+}
+
+std::vector<double> Membrane::outward_normals() const {
+  std::vector<double> n(2 * n_);
+  for (std::size_t i = 0; i < n_; ++i) {
+    n[2 * i] = spline_.tangent_y(static_cast<int>(i));
+    n[2 * i + 1] = -spline_.tangent_x(static_cast<int>(i));
+  }
+  return n;
+}
+
+std::vector<double> Membrane::pointwise_forces() const {
+  const int n = static_cast<int>(n_);
+  auto wrap = [n](int i) { return (i % n + n) % n; };
+  // node arc-length coordinates (unwrapped around node i by summing lengths)
+  auto stencil_s = [&](int i, double s[5]) {
+    s[2] = 0.0;
+    s[3] = l_[wrap(i)];
+    s[4] = s[3] + l_[wrap(i + 1)];
+    s[1] = -l_[wrap(i - 1)];
+    s[0] = s[1] - l_[wrap(i - 2)];
+  };
+  auto d5 = [&](const std::vector<double>& f, int i) {
+    double s[5], v[5];
+    stencil_s(i, s);
+    for (int k = 0; k < 5; ++k) v[k] = f[wrap(i - 2 + k)];
+    return five_point_derivative(s, v);
+  };
+  const auto& kappa = spline_.curvatures();
+  std::vector<double> tau_node(n), q_node(n), dtau(n), dq(n);
+  for (int i = 0; i < n; ++i) tau_node[i] = 0.5 * (tau_[wrap(i - 1)] + tau_[i]);
+  for (int i = 0; i < n; ++i) q_node[i] = d5(m_, i);
+  for (int i = 0; i < n; ++i) {
+    dtau[i] = d5(tau_node, i);
+    dq[i] = d5(q_node, i);
+  }
+  std::vector<double> F(2 * n_);
+  for (int i = 0; i < n; ++i) {
+    const double tx = spline_.tangent_x(i), ty = spline_.tangent_y(i);
+    const double nx = ty, ny = -tx;
+    const double fn = kappa[i] * tau_node[i] - dq[i];      // (27) normal part
+    const double ft = -(dtau[i] + kappa[i] * q_node[i]);  // (27) tangential part
+    const double share = 0.5 * (l_[wrap(i - 1)] + l_[i]);
+    F[2 * i] = -(fn * nx + ft * tx) * share;  // the fluid receives -f
+    F[2 * i + 1] = -(fn * ny + ft * ty) * share;
+  }
+  return F;
+}
+
+}  // namespace capsule::membrane2d

@@ -1,0 +1,76 @@
+#pragma once
+// The 2D capsule membrane (Sec. 2.4): a closed chain of line segments with
+//   in-plane tension   tau = tau_e + tau_v                             (28)
+//     Hooke            tau_e = E_s (lambda - 1),  lambda = l / l0       (29)-(30)
+//     Kelvin-Voigt     tau_v = mu_s (1/lambda) d lambda / dt            (31)
+//                      (one-sided second-order backward difference in time)
+//   transverse shear   q = dm/dl,  m = E_B (kappa - kappa0)              (32)
+//   curvature          periodic parametric cubic spline (PeriodicSpline), kappa0 = initial kappa.
+// The load (27) f = -d/dl (tau t + q n) is the traction jump; the membrane pushes the fluid with
+// -f = d/dl (tau t + q n). It is integrated over each node's share of the membrane, in
+// conservative form: the force node i exerts on the fluid is
+//   F_i = T_i - T_{i-1},   T_i = tau_i t_i + q_i n_i  on segment i (node i -> i+1),
+// with q_i = (m_{i+1} - m_i) / l_i at the segment midpoint. Telescoping sums make the total
+// force and (since sum_i l_i q_i = sum_i (m_{i+1} - m_i) = 0 and T_i's tension part is parallel
+// to the segment) the total torque vanish exactly for any shape. pointwise_forces() evaluates
+// (27) at the nodes with five-point arc-length derivatives, as the text does, for comparison.
+// Orientation: counter-clockwise nodes, t along increasing node index, outward n = t turned
+// clockwise, so dt/dl = -kappa n and a circle has kappa = +1/a.
+#include <cstddef>
+#include <vector>
+
+#include "solver/membrane2d/periodic_spline.hpp"
+
+namespace capsule::membrane2d {
+
+struct Moduli {
+  double E_s = 0;   // shear elasticity modulus (30)
+  double E_B = 0;   // bending modulus (32)
+  double mu_s = 0;  // membrane viscosity (31)
+};
+
+class Membrane {
+ public:
+  // The given shape is the stress-free reference: l0 = its segment lengths, kappa0 = its curvature.
+  Membrane(std::vector<double> xy, Moduli moduli);
+
+  std::size_t size() const { return n_; }
+  std::vector<double>& positions() { return xy_; }  // flat (x0, y0, x1, y1, ...)
+  const std::vector<double>& positions() const { return xy_; }
+  const Moduli& moduli() const { return moduli_; }
+
+  // Computes the forces the nodes exert on the fluid at the current positions. dt is the
+  // time step for the viscous tension (31); advance_history = true (once per time step)
+  // stores this step's stretches for the next backward difference.
+  void compute_forces(double dt, bool advance_history = true);
+  const std::vector<double>& forces() const { return force_; }
+
+  // State from the last compute_forces():
+  const std::vector<double>& stretch() const { return lambda_; }          // per segment (29)
+  const std::vector<double>& tension() const { return tau_; }             // per segment (28)
+  const std::vector<double>& curvature() const { return spline_.curvatures(); }  // per node
+  const std::vector<double>& reference_curvature() const { return kappa0_; }
+  const std::vector<double>& bending_moment() const { return m_; }        // per node, m = E_B (kappa - kappa0)
+  const std::vector<double>& reference_lengths() const { return l0_; }
+  std::vector<double> outward_normals() const;  // per node, unit, from the spline tangent
+                                                // of the last compute_forces() / refit()
+  void refit() { fit_geometry(); }              // after moving positions() by hand
+
+  // (27) at the nodes with five-point non-uniform arc-length derivatives, times each node's
+  // share of arc length (l_{i-1} + l_i)/2: the text's discretisation, not conservative.
+  std::vector<double> pointwise_forces() const;
+
+ private:
+  void fit_geometry();
+
+  std::size_t n_;
+  std::vector<double> xy_;
+  Moduli moduli_;
+  std::vector<double> l0_, kappa0_;
+  PeriodicSpline spline_;
+  std::vector<double> l_, lambda_, tau_, m_, q_, force_;
+  std::vector<double> lambda_prev1_, lambda_prev2_;  // stretches one and two steps back
+  int history_ = 0;                                   // how many of them exist
+};
+
+}  // namespace capsule::membrane2d
