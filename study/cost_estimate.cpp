@@ -16,7 +16,7 @@ CostEstimate estimate_cost(const nlohmann::json& canonical_scene) {
     return p.max_kt;
   };
   c.kt_span = phase_span(scene.shear) + phase_span(scene.recover);
-  if (scene.tau > 0) c.steps_per_kt = units_for(scene, scene.tau).steps_per_kt;
+  c.steps_per_kt = units_for(scene, choose_tau(scene)).steps_per_kt;  // the tau the solver will run
   return c;
 }
 

@@ -24,18 +24,12 @@ void print_plan(const CampaignSurvey& survey, std::ostream& out) {
       << "member (parameters)\n";
   double total_node_steps = 0;
   double total_node_kt = 0;
-  bool steps_unknown = false;
   for (std::size_t i = 0; i < survey.members.size(); ++i) {
     const Member& m = survey.members[i];
     const CostEstimate c = estimate_cost(m.scene);
     const bool pending = survey.conditions[i].state != MemberState::complete;
-    std::string node_steps = "(solver tau)";
-    if (c.steps_per_kt > 0) {
-      node_steps = format_number(c.node_steps());
-      if (pending) total_node_steps += c.node_steps();
-    } else if (pending) {
-      steps_unknown = true;
-    }
+    const std::string node_steps = format_number(c.node_steps());
+    if (pending) total_node_steps += c.node_steps();
     if (pending) total_node_kt += static_cast<double>(c.nodes) * c.kt_span;
     std::string params;
     for (const auto& [key, value] : m.parameters) params += (params.empty() ? "" : ", ") + key + "=" + value.dump();
@@ -55,7 +49,6 @@ void print_plan(const CampaignSurvey& survey, std::ostream& out) {
       << survey.count(MemberState::stopped) << " stopped\n";
   out << "cost of what is not complete: " << format_number(total_node_kt) << " node-kt";
   if (total_node_steps > 0) out << ", " << format_number(total_node_steps) << " node-steps";
-  if (steps_unknown) out << " (steps depend on the relaxation time the solver chooses for members with tau = 0)";
   out << "\n";
 }
 

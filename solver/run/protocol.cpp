@@ -48,9 +48,10 @@ bool Protocol::steady(double window_kt, double tolerance, double since_kt) const
   return hi - lo < tolerance;
 }
 
-bool Protocol::crossed(double previous, double current, double value) {
-  // A jump of more than pi is a wrap of the angle, not a crossing.
-  if (std::abs(current - previous) > std::numbers::pi) return false;
+bool Protocol::crossed(double previous, double current, double value, double period) {
+  // A jump of more than half the angle's period is a wrap, not a crossing: theta (an axis)
+  // lives in (-pi/2, pi/2] and wraps by pi; beta (a position) wraps by 2 pi.
+  if (std::abs(current - previous) > period / 2) return false;
   return (previous - value) * (current - value) <= 0 && previous != value;
 }
 
@@ -74,12 +75,12 @@ void Protocol::observe(double kt, double D, double theta, double beta) {
                 num(shear_.window_kt) + " kt)";
       }
     } else if (shear_.until == "theta") {
-      if (have_prev_ && crossed(prev_theta_, theta, shear_.value)) {
+      if (have_prev_ && crossed(prev_theta_, theta, shear_.value, std::numbers::pi)) {
         stop = true;
         note_ = "shear stopped when theta reached " + num(shear_.value);
       }
     } else if (shear_.until == "beta") {
-      if (have_prev_ && crossed(prev_beta_, beta, shear_.value)) {
+      if (have_prev_ && crossed(prev_beta_, beta, shear_.value, 2 * std::numbers::pi)) {
         stop = true;
         note_ = "shear stopped when beta reached " + num(shear_.value);
       }

@@ -36,7 +36,7 @@ class Protocol {
  private:
   enum class Phase { shear, recover, done };
   bool steady(double window_kt, double tolerance, double since_kt) const;
-  static bool crossed(double previous, double current, double value);
+  static bool crossed(double previous, double current, double value, double period);
 
   PhaseSpec shear_, recover_;
   Phase phase_ = Phase::shear;

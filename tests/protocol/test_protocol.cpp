@@ -90,6 +90,14 @@ TEST_CASE("angle conditions stop on crossing, not on wrap-around", "[protocol]")
   // theta = -pi/3 at kt = (pi/4 + pi/3)/0.5 = 3.665; the first row at or past it is 3.70.
   CHECK(p.markers()["t_stop"] == Approx(3.70).margin(1e-9));
 
+  // The major axis wraps by pi: from -1.5 to +1.5 rad is a wrap, not a crossing of -pi/3
+  // (the jump of 3 rad is below the 2 pi wrap of beta but above the pi/2 of an axis).
+  Protocol w(scene_with({{"shear", {{"until", "theta"}, {"value", -std::numbers::pi / 3}}},
+                         {"recover", {{"until", "time"}, {"kt", 1}}}}));
+  w.observe(0.0, 0.3, -1.5, 0.0);
+  w.observe(0.05, 0.3, 1.5, 0.0);
+  CHECK(w.shear_on());
+
   Protocol q(scene_with({{"shear", {{"until", "beta"}, {"value", 3.0}}}, {"recover", {{"until", "time"}, {"kt", 1}}}}));
   q.observe(0.0, 0.1, 0.0, 3.1);
   q.observe(0.05, 0.1, 0.0, -3.1);  // wrapped from +pi to -pi: not a crossing of 3.0
