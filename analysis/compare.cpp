@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/fit_result.hpp"
+#include "analysis/member_compare.hpp"
 #include "analysis/table.hpp"
 #include "analysis/table2_reference.hpp"
 
@@ -25,7 +26,7 @@ struct BilinearEntry {
   FitResult fit;
 };
 
-std::vector<BilinearEntry> read_bilinear(const CompareEntry& e) {
+nlohmann::json read_fits_json(const CompareEntry& e) {
   const fs::path path = fs::path(e.report_dir) / "fits.json";
   std::ifstream f(path);
   if (!f) throw std::runtime_error(path.string() + ": cannot open (run the report first)");
@@ -35,6 +36,10 @@ std::vector<BilinearEntry> read_bilinear(const CompareEntry& e) {
   } catch (const nlohmann::json::exception& ex) {
     throw std::runtime_error(path.string() + ": not valid JSON: " + ex.what());
   }
+  return j;
+}
+
+std::vector<BilinearEntry> read_bilinear(const CompareEntry& e, const nlohmann::json& j) {
   std::vector<BilinearEntry> out;
   for (const auto& b : j.value("bilinear", nlohmann::json::array())) {
     BilinearEntry be;
@@ -66,9 +71,11 @@ bool same(double x, double y) { return std::abs(x - y) <= 1e-9 * std::max(1.0, s
 int compare_campaigns(const std::vector<CompareEntry>& entries, bool against_table2, std::ostream& out,
                       const std::string& out_dir) {
   std::vector<std::vector<BilinearEntry>> all;
+  std::vector<CampaignFits> fits;
   bool one_case_each = true;
   for (const auto& e : entries) {
-    all.push_back(read_bilinear(e));
+    fits.push_back({e.name, read_fits_json(e)});
+    all.push_back(read_bilinear(e, fits.back().fits));
     std::map<std::string, int> cases;
     for (const auto& b : all.back()) cases[b.case_name]++;
     std::map<std::string, int> per_target;
@@ -126,10 +133,15 @@ int compare_campaigns(const std::vector<CompareEntry>& entries, bool against_tab
   }
 
   fs::create_directories(out_dir);
-  if (keys.empty()) out << "No bilinear fits in these reports (add \"bilinear\" to the analysis block).\n";
-  std::string md = "# Campaign comparison\n\n" + side.to_markdown();
+  std::string md = "# Campaign comparison\n\n";
   std::string csv = side.to_csv();
-  out << side.to_markdown();
+  if (keys.empty()) {
+    out << "No bilinear fits in these reports (add \"bilinear\" to the analysis block).\n";
+    md += "No bilinear fits in these reports.\n\n";
+  } else {
+    md += side.to_markdown();
+    out << side.to_markdown();
+  }
 
   if (against_table2) {
     Table t2;
@@ -168,6 +180,33 @@ int compare_campaigns(const std::vector<CompareEntry>& entries, bool against_tab
     md += "\n" + t2.to_markdown();
     std::ofstream(fs::path(out_dir) / "compare_table2.csv") << t2.to_csv();
     out << "\n" << t2.to_markdown();
+  }
+
+  // Per-member fitted times, matched across the campaigns (needs two of them).
+  if (entries.size() > 1) {
+    const MemberComparison mc = compare_members(fits);
+    if (mc.non_overlapping > 0) status = 1;
+    std::string section = "\n## Per-member fitted times\n\nMembers matched by case";
+    for (std::size_t i = 0; i < mc.match_parameters.size(); ++i)
+      section += (i ? ", " : " and ") + mc.match_parameters[i];
+    section += mc.match_parameters.empty() ? std::string(" alone (no parameter varies within a case).")
+                                           : std::string(" (the parameters that identify a member within its campaign).");
+    if (!mc.differing_parameters.empty()) {
+      section += " Not used for matching, but different between matched members:";
+      for (std::size_t i = 0; i < mc.differing_parameters.size(); ++i)
+        section += (i ? ", " : " ") + mc.differing_parameters[i];
+      section += ".";
+    }
+    section += " " + std::to_string(mc.compared) + " pairs of 95 % intervals compared, " +
+               std::to_string(mc.non_overlapping) + " do not overlap.\n\n";
+    section += mc.times.rows.empty() ? std::string("No member appears in two campaigns.\n") : mc.times.to_markdown();
+    section += "\n";
+    section += mc.unmatched.rows.empty() ? std::string("Every member appears in every campaign.\n")
+                                         : mc.unmatched.to_markdown();
+    mc.times.write(out_dir, "compare_members");
+    mc.unmatched.write(out_dir, "compare_members_unmatched");
+    md += section;
+    out << section;
   }
   std::ofstream(fs::path(out_dir) / "compare.md") << md;
   std::ofstream(fs::path(out_dir) / "compare.csv") << csv;
