@@ -31,7 +31,9 @@
 // Viscosity: nu = (1/s_nu - 1/2)/3 (8), (13). A Fluid runs with one uniform viscosity
 // (no per-node array exists) until set_viscosity(node, nu) is called; from then on every
 // node carries its own nu, and only nodes set since the last step get their s_nu
-// recomputed. set_uniform_viscosity() returns to the uniform mode.
+// recomputed. set_uniform_viscosity() returns to the uniform mode. s_nu sets the rates
+// of the stresses, e and eps, and (D2Q9) q by (9); see relaxation.hpp for why e and eps
+// follow s_nu (a fixed s_eps with s_e = s_nu is unstable for tau >~ 1.9 (2D) / 1.5 (3D)).
 #include <array>
 #include <cstddef>
 #include <functional>

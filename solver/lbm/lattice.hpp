@@ -15,7 +15,7 @@ namespace capsule::lbm {
 enum class RateGroup {
   conserved,  // rho, j: not relaxed
   shear,      // stress moments: s_nu, nu = (1/s_nu - 1/2)/3  (8), (13)
-  energy,     // e: bulk viscosity (10), (14); here s_e = s_nu (see relaxation.hpp)
+  energy,     // e (bulk viscosity (10), (14)) and eps (energy square): s_nu (relaxation.hpp)
   heat_flux,  // q: (9) in D2Q9, s_q = s_nu in D3Q19
   fixed       // higher-order moments with a constant rate
 };
@@ -48,12 +48,13 @@ struct D2Q9 {
       default: return 0;
     }
   }
-  // (7)-(10): s0, s3, s5 conserved; s7 = s8 = s_nu; s4 = s6 from (9); s1 from (10); s2 = 1.64.
+  // (7)-(10): s0, s3, s5 conserved; s7 = s8 = s_nu; s4 = s6 from (9); s1 from (10) with
+  // s1 = s_nu; s2 = s_nu, not the text's 1.64 (relaxation.hpp: 1.64 is unstable for tau >~ 1.9).
   static constexpr std::array<RateGroup, Q> rate_group{
-      RateGroup::conserved, RateGroup::energy,    RateGroup::fixed,
+      RateGroup::conserved, RateGroup::energy,    RateGroup::energy,
       RateGroup::conserved, RateGroup::heat_flux, RateGroup::conserved,
       RateGroup::heat_flux, RateGroup::shear,     RateGroup::shear};
-  static constexpr double fixed_rate = 1.64;  // s2 (energy square), Sec. 2.1
+  static constexpr double fixed_rate = 1.64;  // unused in D2Q9 (no moment is in RateGroup::fixed)
   // (9): s4 = s6 = 3 (2 - s_nu) / (3 - s_nu).
   static constexpr double heat_flux_rate(double s_nu) { return 3.0 * (2.0 - s_nu) / (3.0 - s_nu); }
 };
@@ -100,17 +101,17 @@ struct D3Q19 {
       default: return 0;
     }
   }
-  // (12)-(14): s9 = s11 = s13 = s14 = s15 = s_nu; s4 = s6 = s8 = s_nu; s1 from (14);
-  // s2, s10, s12, s16, s17, s18 = 1.8.
+  // (12)-(14): s9 = s11 = s13 = s14 = s15 = s_nu; s4 = s6 = s8 = s_nu; s1 from (14) with
+  // s1 = s_nu; s2 = s_nu, not the text's 1.8 (relaxation.hpp); s10, s12, s16, s17, s18 = 1.8.
   static constexpr std::array<RateGroup, Q> rate_group{
-      RateGroup::conserved, RateGroup::energy,    RateGroup::fixed,
+      RateGroup::conserved, RateGroup::energy,    RateGroup::energy,
       RateGroup::conserved, RateGroup::heat_flux, RateGroup::conserved,
       RateGroup::heat_flux, RateGroup::conserved, RateGroup::heat_flux,
       RateGroup::shear,     RateGroup::fixed,     RateGroup::shear,
       RateGroup::fixed,     RateGroup::shear,     RateGroup::shear,
       RateGroup::shear,     RateGroup::fixed,     RateGroup::fixed,
       RateGroup::fixed};
-  static constexpr double fixed_rate = 1.8;  // Sec. 2.1: "set equal to 1.8"
+  static constexpr double fixed_rate = 1.8;  // Sec. 2.1: "set equal to 1.8" (pi and m moments)
   // Sec. 2.1: s4 = s6 = s8 = s9 for isotropy.
   static constexpr double heat_flux_rate(double s_nu) { return s_nu; }
 };
