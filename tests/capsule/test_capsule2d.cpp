@@ -161,8 +161,10 @@ TEST_CASE("capsule binary: bad scenes are refused naming the key (exit 2)", "[ca
 TEST_CASE("capsule binary: a member forced unstable ends as unstable with no NaN (exit 3)", "[capsule2d]") {
   const fs::path out = temp_dir() / "unstable.h5";
   fs::remove(out);
-  auto j = circle_scene(5, 0.05, 0.05);
-  j["resolution"]["tau"] = 4.0;  // S = Re nu / (a Ca) = 0.23, above the measured limit ~0.12
+  // Ca = 10: a membrane 200 times softer than the base case stretches without bound in the
+  // shear (a segment passes the stretch bound of 3 near kt = 2.8 at a = 5).
+  auto j = circle_scene(5, 10.0, 0.05);
+  j["protocol"]["shear"]["kt"] = 4.0;
   const Run r = run_capsule(j, out, "unstable");
   INFO(r.output);
   REQUIRE(r.exit_code == 3);
