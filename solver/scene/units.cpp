@@ -29,7 +29,9 @@ double choose_tau_2d(const Scene& scene) {
 }
 
 
-// 3D: tau = 1 (nu = 1/6); see solver/run/simulation3d.cpp for the measurements.
+// 3D: tau = 1 (nu = 1/6). A larger tau is cheaper (a^2/(Re nu) steps per kt) but tau = 2 went
+// unstable (NaN at kt = 0.7, sphere, a = 5, Ca = 0.1) where tau = 1 ran to steady state within
+// 3 % of the reference (solver/membrane3d/README.md).
 double choose_tau_3d(const Scene&) { return 1.0; }
 }  // namespace
 

@@ -1,0 +1,70 @@
+#pragma once
+// FEM membrane elasticity (Sec. 2.5.1, (42)-(55)) with linear triangles, and the
+// standard-linear-solid membrane viscoelasticity (63)-(67).
+//
+// Per triangle, the reference edges are written in a plane frame of the reference triangle
+// (Charrier: vertex i at the origin, edge ij along the local x axis), giving the 2x2 shape
+// matrix D_m whose inverse holds the shape-function gradients (50)-(54). The current edges
+// (3x2, E_s = [X_j - X_i, X_k - X_i]) give F = E_s D_m^-1 (3x2) and C = F^T F (2x2); since
+// C is invariant under rigid motion, mapping the current triangle to the plane is implicit.
+// The nodal force (55) is f_l = -A_0 P grad N^l with the first Piola-Kirchhoff tension
+// P = F S = J sigma F^-T: (55)'s (lambda1 lambda2 / 2) sigma F^-T [a; b] with A_0 = (a_i x_i + ...)/2.
+// The sign is that of the force the membrane exerts on its nodes (minus the energy gradient),
+// i.e. the force handed to the fluid.
+#include <vector>
+
+#include "solver/membrane3d/constitutive_law.hpp"
+#include "solver/membrane3d/mesh.hpp"
+
+namespace capsule::membrane3d {
+
+// Standard linear solid (DESIGN 3.4): a Maxwell element (modulus E_m = G E_s, relaxation time
+// tau_m = mu_s / E_m -- the text's "tau_m = E_m / mu_s" has the wrong dimension) in parallel
+// with the elastic law. Its tension is the relaxation-weighted history of the Maxwell
+// element's instantaneous elastic tension S_m(C) (the law with E_s -> E_m):
+//   Q(t) = int_0^t exp(-(t - s)/tau_m) d S_m(C(s))/ds ds,
+// updated in O(1) per step by (67) with S_m varying linearly over a step:
+//   Q_{n+1} = exp(-dt/tau_m) Q_n + tau_m (S_m(n+1) - S_m(n))/dt (1 - exp(-dt/tau_m)).
+// In 2nd Piola-Kirchhoff form this is (63)-(64) (the g_0 F F^T and pressure terms are the
+// neo-Hookean S = E_s (I - C^-1/det C) pushed forward). For a fast Maxwell element
+// (tau_m << 1/k) the membrane is Kelvin-Voigt with surface shear viscosity mu_s = E_m tau_m.
+struct MaxwellElement {
+  double E_m = 0;    // 0: purely elastic
+  double tau_m = 0;  // relaxation time (time steps)
+  double dt = 1;     // time step
+};
+
+class ElasticMembrane {
+ public:
+  ElasticMembrane() = default;
+  // `reference` fixes the stress-free shape of every triangle (it may differ from the start
+  // shape: Table 1 case C).
+  ElasticMembrane(const Mesh& reference, const Constitutive& law, const MaxwellElement& maxwell = {});
+
+  // Adds the elastic (and viscoelastic) nodal forces for the current positions to `force`.
+  // With a Maxwell element this ADVANCES its memory by one step (call once per time step).
+  void add_forces(const Mesh& current, std::vector<Vec3>& force);
+  // The same forces without touching the viscoelastic memory.
+  void add_elastic_forces(const Mesh& current, std::vector<Vec3>& force) const;
+  // Stored elastic energy sum_t A_0 W(C_t) (the elastic branch only).
+  double energy(const Mesh& current) const;
+
+  // Right Cauchy-Green tensor of triangle t (reference frame).
+  Mat2 cauchy_green(const Mesh& current, int t) const;
+  double reference_area(int t) const { return area0_[t]; }
+  double reference_total_area() const;
+  const Constitutive& law() const { return law_; }
+
+ private:
+  Constitutive law_;
+  MaxwellElement maxwell_;
+  std::vector<Mat2> Dm_inv_;
+  std::vector<double> area0_;
+  std::vector<Mat2> Q_, Sm_previous_;  // SLS memory per triangle
+  bool memory_started_ = false;
+
+  template <class TensionFn>
+  void accumulate(const Mesh& current, std::vector<Vec3>& force, TensionFn&& tension) const;
+};
+
+}  // namespace capsule::membrane3d

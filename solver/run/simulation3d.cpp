@@ -1,0 +1,367 @@
+// The 3D member (Sec. 2.1, 2.3, 2.5): D3Q19 MRT fluid between moving walls, the triangulated
+// FEM membrane with Helfrich bending and the volume penalty, coupled by the immersed
+// boundary (17)-(21), optional viscosity contrast (15)-(16).
+//
+// Per lattice step (the same order as the 2D driver, simulation2d.cpp):
+//   membrane forces at X(n) -> spread (21) -> fluid step with that force ->
+//   interpolate u(n) at X(n) (19) -> X(n+1) = X(n) + U dt (20) -> viscosity field (if V != 1).
+// The fluid starts in the linear Couette flow u = k (y - H/2) shear_factor(0); the walls move
+// at -+ k H/2 shear_factor(kt).
+//
+// Conventions (README "3D member"):
+//  - E_B = E_b a^2 E_s. (35) prints E_B/(a E_s), which has the dimension of a length; the text
+//    works with a = 1, where both agree, and this form keeps the physics independent of the
+//    resolution a (the same choice as the 2D driver). c0 is given in units of 1/a.
+//  - Volume penalty (84): K_v = volume_penalty E_s / a (a pressure).
+//  - Curvature: outward normal, kappa = 1/R > 0 on a sphere; c0 < 0 opposes it (bending.hpp).
+//  - Series columns: see Simulation3D::row().
+#include "solver/run/simulation3d.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+
+#include "solver/ib/interpolation.hpp"
+#include "solver/ib/viscosity_contrast.hpp"
+#include "solver/lbm/fluid.hpp"
+#include "solver/membrane3d/membrane_forces.hpp"
+#include "solver/membrane3d/phase_angles.hpp"
+#include "solver/membrane3d/shape_measures.hpp"
+#include "solver/membrane3d/shapes.hpp"
+#include "solver/membrane3d/surface_geometry.hpp"
+#include "solver/membrane3d/vtk_writer.hpp"
+#include "solver/run/protocol.hpp"
+#include "solver/scene/units.hpp"
+
+namespace capsule {
+
+// Peskin's 4-point kernel, as in 2D: the cosine kernel (18) has no zero first moment, so it
+// interpolates a linear shear with a lattice-locked error (README "The 2D capsule").
+constexpr ib::Kernel kKernel = ib::Kernel::peskin4;
+
+namespace m3 = membrane3d;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+static_assert(sizeof(m3::Vec3) == 3 * sizeof(double), "membrane positions are used as a flat n x 3 array");
+
+
+// The membrane's small-deformation shear modulus G_s from the E_s of Ca (34).
+// Neo-Hookean: E_s is the "surface modulus of elasticity" of Ramanujan and Pozrikidis (1998),
+// whose law is tau_1 = E_s/(3 l1 l2)(l1^2 - 1/(l1 l2)^2), so G_s = E_s/3 -- the same as the
+// text's own SLS (63), g_0 = E_s/3 -- and the text validates against their D(Ca) at equal Ca
+// (Fig. 7). (56) and (58)-(59) as printed have G_s = E_s; with that reading a sphere at
+// Ca = 0.05 deforms to D = 0.12 at a = 5 where Ramanujan and Pozrikidis have 0.26 (README
+// "3D member", measured). Skalak: (60)-(61) as printed, G_s = E_s (Skalak et al., Yazdani and
+// Bagchi).
+double shear_modulus_3d(const Scene& s, const Units& u) { return s.law == "neo-hookean" ? u.E_s / 3.0 : u.E_s; }
+
+struct Timings {
+  double fluid = 0, coupling = 0;
+};
+
+class Simulation3D {
+ public:
+  explicit Simulation3D(const Scene& s)
+      : scene_(s), units_(units_for(s, choose_tau(s))), n_(s.grid()),
+        grid_{n_[0], n_[1], n_[2]}, fluid_(n_[0], n_[1], n_[2], units_.nu) {
+    if (s.dim != 3) throw std::invalid_argument("Simulation3D: scene.dim must be 3");
+    if (s.power_law_K > 0) throw std::invalid_argument("power-law membrane viscosity is not implemented in 3D");
+    build_membrane();
+    U_.assign(3 * mesh_.vertex_count(), 0.0);
+    if (s.V != 1.0) {
+      contrast_ = std::make_unique<ib::ViscosityContrast<3>>(grid_, units_.nu, units_.nu_inside);
+      update_contrast();
+    }
+    const double k = units_.shear_rate, H = grid_.ny;
+    const double f0 = Protocol(s).shear_factor(0.0);
+    fluid_.initialise_velocity([&](double, double y, double) {
+      return std::array<double, 3>{k * (y - 0.5 * H) * f0, 0.0, 0.0};  // linear Couette flow (1)
+    });
+    const auto d0 = m3::inertia_deformation(mesh_);
+    phase_ = m3::PhaseTracker(mesh_, d0.centroid, d0.theta);
+    area0_ = m3::surface_area(mesh_);
+  }
+
+  const Units& units() const { return units_; }
+  double E_B() const { return E_B_; }
+  double shear_modulus() const { return shear_modulus_; }
+  double K_v() const { return K_v_; }
+  const m3::Mesh& mesh() const { return mesh_; }
+  long steps() const { return steps_; }
+  double kt() const { return steps_ * units_.shear_rate; }
+  const Timings& timings() const { return timings_; }
+  const m3::MembraneTimings& membrane_timings() const { return forces_.timings(); }
+  const std::vector<int>& tracked() const { return phase_.vertices(); }
+
+  void step(double shear_factor) {
+    const std::size_t n = mesh_.vertex_count();
+    forces_.compute(mesh_, force_);
+    auto t0 = Clock::now();
+    double* p[3] = {fluid_.force(0), fluid_.force(1), fluid_.force(2)};
+    // The force field is zero except where the last step spread: clear only there.
+    if (spread_from_.empty()) fluid_.clear_force();
+    else ib::clear_support<3>(grid_, spread_from_.data(), n, p, kKernel);
+    spread_from_.assign(positions(), positions() + 3 * n);
+    ib::spread<3>(grid_, positions(), reinterpret_cast<const double*>(force_.data()), n, p, kKernel);  // (21)
+    const double wall = 0.5 * units_.shear_rate * grid_.ny * shear_factor;                  // k H / 2 (1)
+    fluid_.set_wall_velocity(-wall, wall);
+    auto t1 = Clock::now();
+    fluid_.step();
+    auto t2 = Clock::now();
+    const double* u[3] = {fluid_.velocity(0), fluid_.velocity(1), fluid_.velocity(2)};
+    ib::interpolate<3>(grid_, u, positions(), n, U_.data(), kKernel);  // (19)
+    ib::advance<3>(positions(), U_.data(), n, 1.0);           // (20)
+    if (contrast_) update_contrast();
+    timings_.coupling += std::chrono::duration<double>((t1 - t0) + (Clock::now() - t2)).count();
+    timings_.fluid += std::chrono::duration<double>(t2 - t1).count();
+    ++steps_;
+  }
+
+  // One output row (DESIGN 3.5) and the phase angles (91)-(92) of the five tracked vertices.
+  std::map<std::string, double> row(std::vector<double>& beta) {
+    const auto d = m3::inertia_deformation(mesh_);
+    beta = phase_.update(mesh_, d.centroid, d.theta);
+    const double a = scene_.a;
+    double umax2 = 0;
+    for (std::size_t i = 0; i < grid_.size(); ++i) {
+      const double s = fluid_.velocity(0)[i] * fluid_.velocity(0)[i] + fluid_.velocity(1)[i] * fluid_.velocity(1)[i] +
+                       fluid_.velocity(2)[i] * fluid_.velocity(2)[i];
+      umax2 = std::max(umax2, s);
+    }
+    return {
+        {"kt", kt()},
+        {"D_xy", d.D},                                              // inertia ellipsoid (38)
+        {"D_extent", m3::extent_deformation(mesh_, d.centroid)},   // (r_max - r_min)/(r_max + r_min)
+        {"theta", d.theta},
+        {"L", d.L / a},
+        {"W", d.W / a},
+        {"volume_drift", m3::enclosed_volume(mesh_) / forces_.volume0() - 1.0},
+        {"surface_drift", m3::surface_area(mesh_) / area0_ - 1.0},
+        {"triangle_quality_min", m3::min_triangle_quality(mesh_)},
+        {"inverted_triangles", static_cast<double>(inverted_triangles())},
+        {"elastic_energy", forces_.elastic().energy(mesh_) / (units_.E_s * a * a)},
+        {"centroid_x", (d.centroid.x() - 0.5 * grid_.nx) / a},
+        {"centroid_y", (d.centroid.y() - 0.5 * grid_.ny) / a},
+        {"centroid_z", (d.centroid.z() - 0.5 * grid_.nz) / a},
+        {"max_speed", std::sqrt(umax2)},
+    };
+  }
+
+  // "" when healthy, else the reason.
+  std::string health(const std::map<std::string, double>& r) const {
+    for (const auto& [k, v] : r)
+      if (!std::isfinite(v)) return "NaN in " + k;
+    for (const auto& x : mesh_.x)
+      if (!x.allFinite()) return "NaN in membrane positions";
+    std::ostringstream why;
+    if (r.at("inverted_triangles") > 0) why << r.at("inverted_triangles") << " inverted triangles";
+    else if (std::abs(r.at("volume_drift")) > max_volume_drift) why << "volume drift " << r.at("volume_drift") << " (bound " << max_volume_drift << ")";
+    else if (r.at("triangle_quality_min") < min_quality) why << "triangle quality " << r.at("triangle_quality_min") << " (bound " << min_quality << ")";
+    else if (r.at("max_speed") > max_speed) why << "fluid speed " << r.at("max_speed") << " (bound " << max_speed << ")";
+    return why.str();
+  }
+
+  std::vector<double> shape() const {
+    std::vector<double> xyz;
+    xyz.reserve(3 * mesh_.vertex_count());
+    for (const auto& p : mesh_.x) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
+    return xyz;
+  }
+
+  // Health bounds (README "3D member"): the enclosed volume drifting by more than 5 % (the IB
+  // leaks a fraction of a percent per unit kt at a = 10), a triangle degenerating below
+  // quality 0.05 (icosphere: 0.97), a lattice speed above 0.2 (Mach 0.35).
+  static constexpr double max_volume_drift = 0.05;
+  static constexpr double min_quality = 0.05;
+  static constexpr double max_speed = 0.2;
+
+ private:
+  double* positions() { return reinterpret_cast<double*>(mesh_.x.data()); }
+
+  void build_membrane() {
+    const Scene& s = scene_;
+    const double a = s.a;
+    const m3::Mesh unit = m3::unit_icosphere(s.mesh_level);
+    const m3::Vec3 centre(0.5 * grid_.nx, 0.5 * grid_.ny, 0.5 * grid_.nz);
+    const double incline = 0.25 * std::numbers::pi;  // 45 degrees in the xy-plane (Sec. 2.5)
+    if (s.shape == "sphere") mesh_ = m3::sphere_mesh(unit, a);
+    else if (s.shape == "biconcave") mesh_ = m3::biconcave_mesh(unit, a);
+    else throw std::invalid_argument("3D shape must be sphere or biconcave, got '" + s.shape + "'");
+    // Table 1, case C: the stress-free reference is the sphere with the start shape's area.
+    m3::Mesh reference = mesh_;
+    if (s.reference_case == "C") reference = m3::sphere_mesh(unit, std::sqrt(m3::surface_area(mesh_) / (4.0 * std::numbers::pi)));
+    m3::rotate_about_z_and_translate(mesh_, incline, centre);
+    m3::rotate_about_z_and_translate(reference, incline, centre);
+
+    m3::MembraneParameters p;
+    shear_modulus_ = shear_modulus_3d(s, units_);
+    p.law = m3::Constitutive{m3::elastic_law_from_name(s.law), shear_modulus_, s.C};
+    if (s.eta > 0) {
+      // SLS (63)-(67): E_m = G E_s, tau_m = mu_s / E_m (DESIGN 3.4), mu_s = eta a mu_a (36).
+      if (!(s.G > 0)) throw std::invalid_argument("eta > 0 needs G = E_m/E_s > 0");
+      const double E_m = s.G * shear_modulus_;  // G = E_m / E_s, in the same convention
+      p.maxwell = m3::MaxwellElement{E_m, units_.mu_s / E_m, 1.0};
+    }
+    E_B_ = s.E_b * a * a * units_.E_s;
+    p.E_B = E_B_;
+    if (s.reference_case == "B") {
+      // c0 = 2 kappa of the start shape, node by node (Table 1, case B).
+      const m3::Curvatures k = m3::fit_curvatures(mesh_);
+      p.c0.resize(mesh_.vertex_count());
+      for (int v = 0; v < mesh_.vertex_count(); ++v) p.c0[v] = 2.0 * k.mean[v];
+    } else {
+      p.c0.assign(mesh_.vertex_count(), s.c0 / a);
+    }
+    K_v_ = s.volume_penalty * units_.E_s / a;
+    p.K_v = K_v_;
+    forces_ = m3::MembraneForces(reference, mesh_, std::move(p));
+  }
+
+  void update_contrast() {
+    const auto normals = m3::averaged_vertex_normals(mesh_);
+    contrast_->update(positions(), reinterpret_cast<const double*>(normals.data()), mesh_.vertex_count(),
+                      [&](std::size_t node, double nu) { fluid_.set_viscosity(node, nu); });
+  }
+
+  // Triangles whose normal opposes the averaged normal of their own vertices.
+  int inverted_triangles() const {
+    const auto vn = m3::averaged_vertex_normals(mesh_);
+    int bad = 0;
+    for (int t = 0; t < mesh_.triangle_count(); ++t) {
+      const auto& tri = mesh_.triangles[t];
+      if (m3::triangle_area_vector(mesh_, t).dot(vn[tri[0]] + vn[tri[1]] + vn[tri[2]]) <= 0) ++bad;
+    }
+    return bad;
+  }
+
+  Scene scene_;
+  Units units_;
+  std::vector<int> n_;
+  ib::Grid grid_;
+  lbm::Fluid<lbm::D3Q19> fluid_;
+  m3::Mesh mesh_;
+  m3::MembraneForces forces_;
+  std::vector<m3::Vec3> force_;
+  std::unique_ptr<ib::ViscosityContrast<3>> contrast_;
+  std::vector<double> U_;
+  std::vector<double> spread_from_;  // node positions of the last spreading
+  m3::PhaseTracker phase_;
+  double E_B_ = 0, K_v_ = 0, area0_ = 0, shear_modulus_ = 0;
+  long steps_ = 0;
+  Timings timings_;
+};
+
+std::string snapshot_path(const std::string& member_path, double kt) {
+  std::string base = member_path;
+  if (base.size() > 3 && base.substr(base.size() - 3) == ".h5") base.resize(base.size() - 3);
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "_kt%08.3f.vtk", kt);
+  return base + buf;
+}
+
+}  // namespace
+
+std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, bool quiet) {
+  Simulation3D sim(scene);
+  Protocol protocol(scene);
+  const Units& u = sim.units();
+  const auto n = scene.grid();
+  const m3::Mesh& mesh = sim.mesh();
+  out.set_attribute("tau", u.tau);
+  out.set_attribute("tau_rule", scene.tau > 0 ? std::string("from the scene") : std::string("choose_tau: 1.0 in 3D (README)"));
+  out.set_attribute("nu", u.nu);
+  out.set_attribute("nu_inside", u.nu_inside);
+  out.set_attribute("shear_rate", u.shear_rate);
+  out.set_attribute("E_s", u.E_s);
+  out.set_attribute("shear_modulus", sim.shear_modulus());
+  out.set_attribute("shear_modulus_convention", std::string("neo-hookean: G_s = E_s/3 (Ramanujan-Pozrikidis E_s); skalak: G_s = E_s"));
+  out.set_attribute("E_B", sim.E_B());
+  out.set_attribute("E_B_convention", std::string("E_B = E_b a^2 E_s; W_b = (E_B/2) int (2 kappa - c0)^2 dS"));
+  out.set_attribute("K_v", sim.K_v());
+  out.set_attribute("mu_s", u.mu_s);
+  out.set_attribute("steps_per_kt", u.steps_per_kt);
+  out.set_attribute("grid", std::to_string(n[0]) + "x" + std::to_string(n[1]) + "x" + std::to_string(n[2]));
+  out.set_attribute("nx", static_cast<long>(n[0]));
+  out.set_attribute("ny", static_cast<long>(n[1]));
+  out.set_attribute("nz", static_cast<long>(n[2]));
+  out.set_attribute("mesh_level", static_cast<long>(scene.mesh_level));
+  out.set_attribute("vertices", static_cast<long>(mesh.vertex_count()));
+  out.set_attribute("triangles", static_cast<long>(mesh.triangle_count()));
+  out.set_attribute("law", scene.law);
+  out.set_attribute("C", scene.C);
+  out.set_attribute("G", scene.G);
+  out.set_attribute("reference_case", scene.reference_case);
+  out.set_attribute("viscoelastic", scene.eta > 0 ? std::string("standard linear solid (63)-(67), tau_m = mu_s/E_m") : std::string("none"));
+  out.set_attribute("delta", std::string("cosine 4-point (18)"));
+  out.set_attribute("beta_tracked", std::string("5 vertices near the shear plane through the centroid, Gamma(0) = 0, pi/8, pi/4, 3pi/8, pi/2; continuous modulo pi"));
+
+  const double k = u.shear_rate;
+  const long steps_per_output = std::max(1L, std::lround(scene.output_interval_kt / k));
+  std::vector<double> shapes = scene.shapes_at_kt;
+  std::sort(shapes.begin(), shapes.end());
+  std::size_t next_shape = 0;
+  std::vector<int> triangles;
+  for (const auto& t : mesh.triangles) triangles.insert(triangles.end(), t.begin(), t.end());
+  auto last_checkpoint = Clock::now();
+  double next_progress = 0.0;
+  std::string status = "complete";
+
+  auto write_shapes = [&](double kt) {
+    while (next_shape < shapes.size() && shapes[next_shape] <= kt + 0.5 * scene.output_interval_kt) {
+      out.add_shape(kt, sim.shape(), 3, triangles);
+      if (scene.snapshots == "vtk") m3::write_vtk_polydata(snapshot_path(out.final_path(), kt), sim.mesh(), "capsule kt = " + std::to_string(kt));
+      ++next_shape;
+    }
+  };
+
+  std::vector<double> beta;
+  for (;;) {
+    auto row = sim.row(beta);
+    const std::string bad = sim.health(row);
+    if (!bad.empty()) {
+      std::ostringstream s;
+      s << "unstable at kt = " << sim.kt() << ": " << bad;
+      status = s.str();
+      break;
+    }
+    row["shear_on"] = protocol.shear_on() ? 1.0 : 0.0;
+    row["shear_factor"] = protocol.shear_factor(sim.kt());
+    out.append(row, beta);
+    write_shapes(sim.kt());
+    protocol.observe(sim.kt(), row["D_xy"], row["theta"], beta[0]);
+    if (!quiet && sim.kt() >= next_progress) {
+      std::cerr << "kt = " << sim.kt() << "  D_xy = " << row["D_xy"] << "  D_extent = " << row["D_extent"]
+                << "  theta = " << row["theta"] << (protocol.shear_on() ? "  shear" : "  recover") << "\n";
+      next_progress += 0.5;
+    }
+    if (out.rows() % 50 == 0 || seconds_since(last_checkpoint) > 30.0) {
+      out.checkpoint();
+      last_checkpoint = Clock::now();
+    }
+    if (protocol.finished()) break;
+    for (long i = 0; i < steps_per_output; ++i) sim.step(protocol.shear_factor(sim.kt()));
+  }
+  out.set_markers(protocol.markers());
+  out.set_attribute("protocol", protocol.phase_note());
+  out.set_attribute("steps", sim.steps());
+  out.set_attribute("seconds_fluid", sim.timings().fluid);
+  out.set_attribute("seconds_coupling", sim.timings().coupling);
+  out.set_attribute("seconds_membrane_elastic", sim.membrane_timings().elastic_s);
+  out.set_attribute("seconds_membrane_curvature", sim.membrane_timings().curvature_s);
+  out.set_attribute("seconds_membrane_bending", sim.membrane_timings().bending_s);
+  return status;
+}
+
+}  // namespace capsule

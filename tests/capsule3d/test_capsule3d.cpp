@@ -1,0 +1,218 @@
+// The 3D member end to end (solver/run/simulation3d.cpp): a neo-Hookean sphere in shear flow
+// against Ramanujan and Pozrikidis (1998) and small-deformation theory, the biconcave start
+// shapes of Table 1, snapshots and the member-file columns.
+//
+// CI versions are short and coarse (a = 4-5 lattice nodes, mesh level 2-3, a few seconds); the
+// full validation (a = 10, level 4, to steady state) is behind the hidden tag [.validation]:
+//   tests/test_capsule3d "[.validation]"   (one thread: ~6 min per kt at a = 10, ~2.5 h in all; the
+//   a = 5 and a = 8 results are tabulated in solver/membrane3d/README.md)
+#include <catch2/catch.hpp>
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "solver/io/member_file.hpp"
+#include "solver/run/simulation3d.hpp"
+#include "solver/scene/scene.hpp"
+
+using namespace capsule;
+
+namespace {
+
+struct Curve {
+  std::vector<double> t, D;
+  double at(double x) const {
+    auto it = std::lower_bound(t.begin(), t.end(), x);
+    if (it == t.begin()) return D.front();
+    if (it == t.end()) return D.back();
+    const std::size_t i = it - t.begin();
+    return D[i - 1] + (D[i] - D[i - 1]) * (x - t[i - 1]) / (t[i] - t[i - 1]);
+  }
+};
+
+// Digitised curve, sorted by time (README of tests/data/reference).
+Curve reference_curve(const std::string& ca) {
+  std::ifstream f(std::string(CAPSULE_SOURCE_DIR) + "/tests/data/reference/sphere_neohookean_V1_rp1998_ca" + ca + ".csv");
+  REQUIRE(f);
+  std::string line;
+  std::getline(f, line);
+  std::vector<std::pair<double, double>> p;
+  while (std::getline(f, line)) {
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream s(line);
+    double t, D;
+    if (s >> t >> D) p.push_back({t, D});
+  }
+  std::sort(p.begin(), p.end());
+  Curve c;
+  for (auto [t, D] : p) c.t.push_back(t), c.D.push_back(D);
+  return c;
+}
+
+io::MemberData run(const std::string& scene_json, const std::string& name) {
+  // One thread: these runs are small (50k lattice nodes), and CTest runs tests side by side on
+  // the 2-core CI machine, where OpenMP barriers on oversubscribed cores cost 5x (measured).
+  omp_set_num_threads(1);
+  const Scene scene = Scene::from_json(nlohmann::json::parse(scene_json), name);
+  const std::string path = (std::filesystem::temp_directory_path() / ("capsule3d_test_" + name + ".h5")).string();
+  std::string status;
+  {
+    io::MemberWriter out(path);
+    status = run_simulation3d(scene, out, true);
+    out.finish(status);
+  }
+  io::MemberData d = io::read_member(path);
+  std::filesystem::remove(path);
+  return d;
+}
+
+std::string sphere_scene(double Ca, double a, int level, double kt, double eta = 0, double interval = 0.05, double V = 1) {
+  std::ostringstream s;
+  s << R"({"dim": 3, "shape": "sphere", "Ca": )" << Ca << R"(, "E_b": 0, "V": )" << V << R"(, "eta": )" << eta << R"(,
+         "resolution": {"a": )" << a << R"(, "mesh_level": )" << level << R"(},
+         "protocol": {"shear": {"until": "time", "kt": )" << kt << R"(}, "recover": {"until": "time", "kt": 0}},
+         "output": {"interval_kt": )" << interval << "}}";
+  return s.str();
+}
+
+std::string biconcave_scene(const std::string& reference_case, double c0, double kt, const std::string& extra = "") {
+  std::ostringstream s;
+  s << R"({"dim": 3, "shape": "biconcave", "Ca": 0.5, "E_b": 0.05, "V": 1, "eta": 0, "c0": )" << c0
+    << R"(, "reference_case": ")" << reference_case << R"(",
+         "resolution": {"a": 4, "mesh_level": 2},
+         "protocol": {"shear": {"until": "time", "kt": )" << kt << R"(}, "recover": {"until": "time", "kt": 0}},
+         "output": {"interval_kt": 0.05)" << extra << "}}";
+  return s.str();
+}
+
+}  // namespace
+
+TEST_CASE("neo-Hookean sphere in shear: short coarse run follows Ramanujan-Pozrikidis", "[capsule3d]") {
+  const io::MemberData d = run(sphere_scene(0.1, 4.0, 2, 0.5), "short_sphere");
+  REQUIRE(d.status == "complete");
+  const auto& kt = d.series.at("kt");
+  const auto& D = d.series.at("D_xy");
+  const auto& De = d.series.at("D_extent");
+  REQUIRE(kt.size() == 11);  // rows at kt = 0, 0.05, ..., 0.5
+  CHECK(D.front() < 1e-12);  // the sphere mesh is exactly round at the start
+  const Curve rp = reference_curve("0.1");
+  const double D_end = D.back(), D_ref = rp.at(kt.back());
+  INFO("kt = " << kt.back() << ": D_xy = " << D_end << ", D_extent = " << De.back() << ", reference " << D_ref);
+  // Measured 0.2034 against 0.1972 (+3.1 %) at a = 4, level 2. Bound 8 %: the digitising error
+  // (+-0.005, 2.5 %) plus the coarse IB's overshoot; reading (56) with G_s = E_s instead of
+  // E_s/3 gives 0.150 (-24 %) and fails.
+  CHECK(std::abs(D_end - D_ref) < 0.08 * D_ref);
+  // The two measures agree for a nearly ellipsoidal shape (README): within 10 % here.
+  CHECK(De.back() == Approx(D_end).epsilon(0.1));
+  // Tank-treading capsule inclined between 0 and 45 degrees to the flow.
+  CHECK(d.series.at("theta").back() > 0.3);
+  CHECK(d.series.at("theta").back() < 0.7854);
+  // The IB leaks little volume over half a shear time.
+  CHECK(std::abs(d.series.at("volume_drift").back()) < 5e-3);
+  // the member file records the 3D choices
+  CHECK(d.attributes.at("vertices").get<long>() == 162);
+  CHECK(d.attributes.at("triangles").get<long>() == 320);
+  CHECK(d.attributes.at("law").get<std::string>() == "neo-hookean");
+  CHECK(d.beta.size() == kt.size());
+  CHECK(d.beta.front().size() == 5);
+}
+
+TEST_CASE("biconcave starts of Table 1: D_xy = 0.51 and case C pre-stressed and all run stably", "[capsule3d]") {
+  for (const auto& [ref_case, c0] : std::vector<std::pair<std::string, double>>{{"A", -2.09}, {"B", 0.0}, {"C", -2.09}}) {
+    const io::MemberData d = run(biconcave_scene(ref_case, c0, 0.2), "biconcave_" + ref_case);
+    INFO("case " << ref_case << ": " << d.status);
+    REQUIRE(d.status == "complete");
+    // Sec. 4.2.1: the undeformed biconcave capsule has D_xy = 0.51 (level 2 mesh: 0.513 measured)
+    CHECK(d.series.at("D_xy").front() == Approx(0.51).margin(0.005));
+    CHECK(d.series.at("theta").front() == Approx(0.785398).margin(1e-6));
+    // Case C's reference is the sphere of equal area: the start shape stores elastic energy;
+    // A and B are stress-free at the start (energy in units of E_s a^2).
+    const double e0 = d.series.at("elastic_energy").front();
+    if (ref_case == "C") CHECK(e0 > 0.1);
+    else CHECK(e0 < 1e-12);
+    CHECK(d.attributes.at("reference_case").get<std::string>() == ref_case);
+    CHECK(d.attributes.at("law").get<std::string>() == "skalak");
+    CHECK(std::abs(d.series.at("volume_drift").back()) < 0.01);
+  }
+}
+
+TEST_CASE("shape snapshots: member-file shapes with triangles and VTK files beside it", "[capsule3d]") {
+  omp_set_num_threads(1);  // as in run()
+  const Scene scene = Scene::from_json(nlohmann::json::parse(biconcave_scene(
+      "A", -2.09, 0.1, R"(, "shapes_at_kt": [0, 0.1], "snapshots": "vtk")")), "snapshots");
+  const auto dir = std::filesystem::temp_directory_path() / "capsule3d_snapshots";
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "member.h5").string();
+  {
+    io::MemberWriter out(path);
+    out.finish(run_simulation3d(scene, out, true));
+  }
+  const io::MemberData d = io::read_member(path);
+  REQUIRE(d.status == "complete");
+  REQUIRE(d.shapes.size() == 2);
+  CHECK(d.shapes[0].dim == 3);
+  CHECK(d.shapes[0].xyz.size() == 3 * 162);
+  CHECK(d.triangles.size() == 3 * 320);
+  int vtk_files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) vtk_files += e.path().extension() == ".vtk";
+  CHECK(vtk_files == 2);
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("membrane viscosity (standard linear solid) slows the response of a sphere", "[capsule3d]") {
+  // Same sphere, eta = 0 and eta = 5 (G = 50): the viscous membrane lags behind the elastic one
+  // early in the shear (Fig. 11). Coarse (a = 4) and short (kt = 0.3).
+  const io::MemberData elastic = run(sphere_scene(0.1, 4.0, 2, 0.3), "sls_elastic");
+  const io::MemberData viscous = run(sphere_scene(0.1, 4.0, 2, 0.3, 5.0), "sls_viscous");
+  REQUIRE(elastic.status == "complete");
+  REQUIRE(viscous.status == "complete");
+  const double De = elastic.series.at("D_xy").back(), Dv = viscous.series.at("D_xy").back();
+  INFO("D(kt = 0.3): elastic " << De << ", eta = 5: " << Dv);
+  CHECK(Dv < 0.9 * De);  // measured 0.074 vs 0.134 (ratio 0.55)
+  CHECK(Dv > 0.0);
+}
+
+TEST_CASE("a more viscous interior (V = 5) slows the response of a sphere", "[capsule3d]") {
+  // Viscosity contrast (15)-(16) through ib::ViscosityContrast<3>: early in the shear the
+  // capsule with V = 5 has deformed less (Ramanujan and Pozrikidis, Fig. 9 of the text).
+  const io::MemberData one = run(sphere_scene(0.1, 4.0, 2, 0.3), "v1");
+  const io::MemberData five = run(sphere_scene(0.1, 4.0, 2, 0.3, 0.0, 0.05, 5.0), "v5");
+  REQUIRE(one.status == "complete");
+  REQUIRE(five.status == "complete");
+  const double D1 = one.series.at("D_xy").back(), D5 = five.series.at("D_xy").back();
+  INFO("D(kt = 0.3): V = 1 " << D1 << ", V = 5 " << D5);
+  CHECK(D5 < 0.9 * D1);  // measured 0.069 vs 0.134 (ratio 0.51); 0.9 leaves room for resolution changes
+  CHECK(std::abs(five.series.at("volume_drift").back()) < 0.01);
+}
+
+TEST_CASE("validation: neo-Hookean sphere steady D_xy against Ramanujan-Pozrikidis at a = 10 and level 4", "[.validation][capsule3d]") {
+  // Hidden (CTest does not run it): ~40 min per capillary number (one thread, a = 10).
+  // Steady plateaus read from the reference curves (tests/data/reference/README.md).
+  const std::vector<std::pair<double, double>> cases = {{0.05, 0.2625}, {0.1, 0.385}, {0.2, 0.50}};
+  for (const auto& [Ca, D_ref] : cases) {
+    const io::MemberData d = run(sphere_scene(Ca, 10.0, 4, 6.0, 0.0, 0.1), "validation");
+    REQUIRE(d.status == "complete");
+    const auto& kt = d.series.at("kt");
+    const auto& D = d.series.at("D_xy");
+    double sum = 0;
+    int n = 0;
+    for (std::size_t i = 0; i < kt.size(); ++i)
+      if (kt[i] >= kt.back() - 1.0 - 1e-9) sum += D[i], ++n;  // mean over the last kt = 1
+    const double D_steady = sum / n;
+    INFO("Ca = " << Ca << ": steady D_xy = " << D_steady << ", D_extent = " << d.series.at("D_extent").back()
+                 << ", reference " << D_ref);
+    CHECK(D_steady == Approx(D_ref).epsilon(0.05));  // the issue's acceptance bound
+  }
+  // Small deformation: D/Ca -> 25/4 (Barthes-Biesel and Rallison 1981, in the E_s of Ca).
+  const io::MemberData d = run(sphere_scene(0.0125, 10.0, 4, 3.0, 0.0, 0.1), "validation_small");
+  REQUIRE(d.status == "complete");
+  const double ratio = d.series.at("D_xy").back() / 0.0125;
+  INFO("Ca = 0.0125: D/Ca = " << ratio);
+  CHECK(ratio == Approx(25.0 / 4.0).epsilon(0.10));
+}
