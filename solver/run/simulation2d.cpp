@@ -15,6 +15,7 @@
 #include "solver/membrane2d/measures.hpp"
 #include "solver/membrane2d/membrane.hpp"
 #include "solver/membrane2d/shape.hpp"
+#include "solver/run/output_loop.hpp"
 #include "solver/run/protocol.hpp"
 
 namespace capsule {
@@ -24,7 +25,6 @@ namespace {
 // Peskin's 4-point kernel, not the cosine kernel (18): see solver/ib/delta.hpp for the measurement.
 constexpr ib::Kernel kKernel = ib::Kernel::peskin4;
 using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 }  // namespace
 
 struct Simulation2D::Impl {
@@ -206,74 +206,18 @@ std::string run_simulation2d(const Scene& scene, io::MemberWriter& out, bool qui
   Simulation2D sim(scene);
   Protocol protocol(scene);
   const Units& u = sim.units();
-  const auto n = scene.grid();
-  out.set_attribute("tau", u.tau);
-  out.set_attribute("tau_rule", scene.tau > 0 ? std::string("from the scene") : std::string("choose_tau (README)"));
-  out.set_attribute("nu", u.nu);
-  out.set_attribute("nu_inside", u.nu_inside);
-  out.set_attribute("shear_rate", u.shear_rate);
-  out.set_attribute("E_s", u.E_s);
-  out.set_attribute("E_B", u.E_B);
-  out.set_attribute("E_B_convention", std::string("E_B = E_b a^2 E_s"));
-  out.set_attribute("mu_s", u.mu_s);
-  out.set_attribute("steps_per_kt", u.steps_per_kt);
-  out.set_attribute("grid", std::to_string(n[0]) + "x" + std::to_string(n[1]));
-  out.set_attribute("nx", static_cast<long>(n[0]));
-  out.set_attribute("ny", static_cast<long>(n[1]));
+  record_units(out, scene, u);
   out.set_attribute("segments", static_cast<long>(scene.segments));
   out.set_attribute("delta", std::string("Peskin 4-point (zero first moment), not the cosine (18): README"));
   out.set_attribute("beta_tracked", std::string("node 0, initially at the end of the major axis; wrapped into (-pi, pi]"));
 
-  const double k = u.shear_rate;
-  const long steps_per_output = std::max(1L, std::lround(scene.output_interval_kt / k));
-  std::vector<double> shapes = scene.shapes_at_kt;
-  std::sort(shapes.begin(), shapes.end());
-  std::size_t next_shape = 0;
-  auto last_checkpoint = Clock::now();
-  double next_progress = 0.0;
-  std::string status = "complete";
-
-  auto write_shapes = [&](double kt) {
-    while (next_shape < shapes.size() && shapes[next_shape] <= kt + 0.5 * scene.output_interval_kt) {
-      out.add_shape(kt, sim.shape(), 2);
-      ++next_shape;
-    }
-  };
-
-  // row 0: the initial state
-  for (;;) {
-    auto row = sim.row();
-    const std::string bad = sim.health(row);
-    if (!bad.empty()) {
-      std::ostringstream s;
-      s << "unstable at kt = " << sim.kt() << ": " << bad;
-      status = s.str();
-      break;
-    }
-    row["shear_on"] = protocol.shear_on() ? 1.0 : 0.0;
-    row["shear_factor"] = protocol.shear_factor(sim.kt());
-    const double beta = sim.beta();
-    out.append(row, {beta});
-    write_shapes(sim.kt());
-    protocol.observe(sim.kt(), row["D_xy"], row["theta"], beta);
-    if (!quiet && sim.kt() >= next_progress) {
-      std::cerr << "kt = " << sim.kt() << "  D_xy = " << row["D_xy"] << "  theta = " << row["theta"]
-                << (protocol.shear_on() ? "  shear" : "  recover") << "\n";
-      next_progress += 1.0;
-    }
-    if (out.rows() % 50 == 0 || seconds_since(last_checkpoint) > 30.0) {
-      out.checkpoint();
-      last_checkpoint = Clock::now();
-    }
-    if (protocol.finished()) break;
-    for (long i = 0; i < steps_per_output; ++i) sim.step(protocol.shear_factor(sim.kt()));
-    if (!sim.failure().empty()) {  // blew up between outputs: no row from a broken state
-      std::ostringstream s;
-      s << "unstable at kt = " << sim.kt() << ": " << sim.failure();
-      status = s.str();
-      break;
-    }
-  }
+  const std::string status = run_output_loop(
+      sim, scene, protocol, out, quiet, u.shear_rate,
+      [&](std::vector<double>& beta) {
+        beta.assign(1, sim.beta());
+        return sim.row();
+      },
+      [&](double kt) { out.add_shape(kt, sim.shape(), 2); });
   out.set_markers(protocol.markers());
   out.set_attribute("protocol", protocol.phase_note());
   out.set_attribute("steps", sim.steps());

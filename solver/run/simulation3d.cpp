@@ -38,6 +38,7 @@
 #include "solver/membrane3d/shapes.hpp"
 #include "solver/membrane3d/surface_geometry.hpp"
 #include "solver/membrane3d/vtk_writer.hpp"
+#include "solver/run/output_loop.hpp"
 #include "solver/run/protocol.hpp"
 #include "solver/scene/units.hpp"
 
@@ -52,7 +53,6 @@ namespace m3 = membrane3d;
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 static_assert(sizeof(m3::Vec3) == 3 * sizeof(double), "membrane positions are used as a flat n x 3 array");
 
@@ -277,25 +277,13 @@ std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, bool qui
   Simulation3D sim(scene);
   Protocol protocol(scene);
   const Units& u = sim.units();
-  const auto n = scene.grid();
   const m3::Mesh& mesh = sim.mesh();
-  out.set_attribute("tau", u.tau);
-  out.set_attribute("tau_rule", scene.tau > 0 ? std::string("from the scene") : std::string("choose_tau: 1.0 in 3D (README)"));
-  out.set_attribute("nu", u.nu);
-  out.set_attribute("nu_inside", u.nu_inside);
-  out.set_attribute("shear_rate", u.shear_rate);
-  out.set_attribute("E_s", u.E_s);
+  record_units(out, scene, u);
   out.set_attribute("shear_modulus", sim.shear_modulus());
   out.set_attribute("shear_modulus_convention", std::string("neo-hookean: G_s = E_s/3 (Ramanujan-Pozrikidis E_s); skalak: G_s = E_s"));
   out.set_attribute("E_B", sim.E_B());
   out.set_attribute("E_B_convention", std::string("E_B = E_b a^2 E_s; W_b = (E_B/2) int (2 kappa - c0)^2 dS"));
   out.set_attribute("K_v", sim.K_v());
-  out.set_attribute("mu_s", u.mu_s);
-  out.set_attribute("steps_per_kt", u.steps_per_kt);
-  out.set_attribute("grid", std::to_string(n[0]) + "x" + std::to_string(n[1]) + "x" + std::to_string(n[2]));
-  out.set_attribute("nx", static_cast<long>(n[0]));
-  out.set_attribute("ny", static_cast<long>(n[1]));
-  out.set_attribute("nz", static_cast<long>(n[2]));
   out.set_attribute("mesh_level", static_cast<long>(scene.mesh_level));
   out.set_attribute("vertices", static_cast<long>(mesh.vertex_count()));
   out.set_attribute("triangles", static_cast<long>(mesh.triangle_count()));
@@ -304,55 +292,18 @@ std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, bool qui
   out.set_attribute("G", scene.G);
   out.set_attribute("reference_case", scene.reference_case);
   out.set_attribute("viscoelastic", scene.eta > 0 ? std::string("standard linear solid (63)-(67), tau_m = mu_s/E_m") : std::string("none"));
-  out.set_attribute("delta", std::string("cosine 4-point (18)"));
+  out.set_attribute("delta", std::string("Peskin 4-point (zero first moment), not the cosine (18): README"));
   out.set_attribute("beta_tracked", std::string("5 vertices near the shear plane through the centroid, Gamma(0) = 0, pi/8, pi/4, 3pi/8, pi/2; continuous modulo pi"));
 
-  const double k = u.shear_rate;
-  const long steps_per_output = std::max(1L, std::lround(scene.output_interval_kt / k));
-  std::vector<double> shapes = scene.shapes_at_kt;
-  std::sort(shapes.begin(), shapes.end());
-  std::size_t next_shape = 0;
   std::vector<int> triangles;
   for (const auto& t : mesh.triangles) triangles.insert(triangles.end(), t.begin(), t.end());
-  auto last_checkpoint = Clock::now();
-  double next_progress = 0.0;
-  std::string status = "complete";
-
-  auto write_shapes = [&](double kt) {
-    while (next_shape < shapes.size() && shapes[next_shape] <= kt + 0.5 * scene.output_interval_kt) {
-      out.add_shape(kt, sim.shape(), 3, triangles);
-      if (scene.snapshots == "vtk") m3::write_vtk_polydata(snapshot_path(out.final_path(), kt), sim.mesh(), "capsule kt = " + std::to_string(kt));
-      ++next_shape;
-    }
-  };
-
-  std::vector<double> beta;
-  for (;;) {
-    auto row = sim.row(beta);
-    const std::string bad = sim.health(row);
-    if (!bad.empty()) {
-      std::ostringstream s;
-      s << "unstable at kt = " << sim.kt() << ": " << bad;
-      status = s.str();
-      break;
-    }
-    row["shear_on"] = protocol.shear_on() ? 1.0 : 0.0;
-    row["shear_factor"] = protocol.shear_factor(sim.kt());
-    out.append(row, beta);
-    write_shapes(sim.kt());
-    protocol.observe(sim.kt(), row["D_xy"], row["theta"], beta[0]);
-    if (!quiet && sim.kt() >= next_progress) {
-      std::cerr << "kt = " << sim.kt() << "  D_xy = " << row["D_xy"] << "  D_extent = " << row["D_extent"]
-                << "  theta = " << row["theta"] << (protocol.shear_on() ? "  shear" : "  recover") << "\n";
-      next_progress += 0.5;
-    }
-    if (out.rows() % 50 == 0 || seconds_since(last_checkpoint) > 30.0) {
-      out.checkpoint();
-      last_checkpoint = Clock::now();
-    }
-    if (protocol.finished()) break;
-    for (long i = 0; i < steps_per_output; ++i) sim.step(protocol.shear_factor(sim.kt()));
-  }
+  const std::string status = run_output_loop(
+      sim, scene, protocol, out, quiet, u.shear_rate, [&](std::vector<double>& beta) { return sim.row(beta); },
+      [&](double kt) {
+        out.add_shape(kt, sim.shape(), 3, triangles);
+        if (scene.snapshots == "vtk")
+          m3::write_vtk_polydata(snapshot_path(out.final_path(), kt), sim.mesh(), "capsule kt = " + std::to_string(kt));
+      });
   out.set_markers(protocol.markers());
   out.set_attribute("protocol", protocol.phase_note());
   out.set_attribute("steps", sim.steps());
