@@ -3,6 +3,9 @@
 // Response (85) and recovery (86) with known times k tau_s, k tau_r and small noise.
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <vector>
 #include <limits>
 #include <random>
 #include <string>
@@ -47,6 +50,22 @@ inline void write_member(const std::string& path, const SyntheticMember& m) {
   w.set_markers({{"t_max", m.t_max}, {"D_max", m.D_max}, {"t_stop", m.t_max}, {"D_stop", m.D_max},
                  {"t_min", nan}, {"D_min", nan}, {"t_end", m.t_end}, {"D_inf", nan}});
   w.finish(m.status);
+}
+
+// A whole file as text, and its non-empty lines (for checking written tables).
+inline std::string slurp(const std::filesystem::path& p) {
+  std::ifstream f(p);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+inline std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string l; std::getline(in, l);)
+    if (!l.empty()) out.push_back(l);
+  return out;
 }
 
 }  // namespace capsule::analysis::testing

@@ -18,6 +18,8 @@
 
 using namespace capsule::analysis;
 using capsule::analysis::testing::SyntheticMember;
+using capsule::analysis::testing::lines;
+using capsule::analysis::testing::slurp;
 using Catch::Matchers::Contains;
 using Catch::Matchers::EndsWith;
 using Catch::Matchers::StartsWith;
@@ -25,20 +27,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string slurp(const fs::path& p) {
-  std::ifstream f(p);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string l; std::getline(in, l);)
-    if (!l.empty()) out.push_back(l);
-  return out;
-}
 
 // Split a CSV line without quoted commas (the cells checked here have none, or are last).
 std::vector<std::string> cells(const std::string& line) {
