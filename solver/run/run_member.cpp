@@ -39,10 +39,7 @@ int run_member(const RunOptions& options) {
   Scene scene;
   try {
     scene = Scene::load(options.scene_path);
-  } catch (const SceneError& e) {
-    std::cerr << "capsule: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
+  } catch (const std::exception& e) {  // SceneError, or an unreadable file
     std::cerr << "capsule: " << e.what() << "\n";
     return 2;
   }
