@@ -19,6 +19,17 @@ Membrane::Membrane(std::vector<double> xy, Moduli moduli) : n_(xy.size() / 2), x
   m_.assign(n_, 0.0);
   q_.assign(n_, 0.0);
   force_.assign(2 * n_, 0.0);
+  tau_v_.assign(n_, 0.0);
+  Fv_prev_.assign(2 * n_, 0.0);
+  Fv_.assign(2 * n_, 0.0);
+}
+
+void Membrane::set_node_velocity(const std::vector<double>& U, double mobility) {
+  if (U.size() != 2 * n_) throw std::invalid_argument("Membrane::set_node_velocity: wrong size");
+  if (!(mobility >= 0.0)) throw std::invalid_argument("Membrane::set_node_velocity: mobility < 0");
+  U_ = U;
+  mobility_ = mobility;
+  implicit_ = true;
 }
 
 void Membrane::fit_geometry() {
@@ -32,20 +43,52 @@ void Membrane::fit_geometry() {
 void Membrane::compute_forces(double dt, bool advance_history) {
   fit_geometry();
   for (std::size_t i = 0; i < n_; ++i) lambda_[i] = l_[i] / l0_[i];  // (29)
-  // (31): d lambda / dt by the one-sided second-order difference (3 l - 4 l1 + l2) / (2 dt),
-  // first order on the second step, zero on the first (the membrane starts at rest).
-  for (std::size_t i = 0; i < n_; ++i) {
-    double rate = 0.0;
-    if (history_ >= 2)
-      rate = (3.0 * lambda_[i] - 4.0 * lambda_prev1_[i] + lambda_prev2_[i]) / (2.0 * dt);
-    else if (history_ == 1)
-      rate = (lambda_[i] - lambda_prev1_[i]) / dt;
-    tau_[i] = moduli_.E_s * (lambda_[i] - 1.0) + moduli_.mu_s * rate / lambda_[i];  // (28), (30), (31)
+  if (implicit_ && moduli_.mu_s > 0.0) {
+    // (31) from the predicted node velocities (see set_node_velocity): cyclic tridiagonal solve
+    // (diag(l/mu_s) + m D D^T) tau_v = D (U - m Fv_prev), (D D^T)_{i,i} = 2, (D D^T)_{i,i+1} = -t_i.t_{i+1}.
+    const double m = mobility_;
+    off_.resize(n_), diag_.resize(n_), rx_.resize(n_), ry_.assign(n_, 0.0);
+    for (std::size_t i = 0; i < n_; ++i) {
+      const std::size_t j = (i + 1) % n_, k = (i + 2) % n_;
+      const double tx = (xy_[2 * j] - xy_[2 * i]) / l_[i], ty = (xy_[2 * j + 1] - xy_[2 * i + 1]) / l_[i];
+      const double sx = (xy_[2 * k] - xy_[2 * j]) / l_[j], sy = (xy_[2 * k + 1] - xy_[2 * j + 1]) / l_[j];
+      const double bx = (U_[2 * j] - m * Fv_prev_[2 * j]) - (U_[2 * i] - m * Fv_prev_[2 * i]);
+      const double by = (U_[2 * j + 1] - m * Fv_prev_[2 * j + 1]) - (U_[2 * i + 1] - m * Fv_prev_[2 * i + 1]);
+      rx_[i] = tx * bx + ty * by;
+      diag_[i] = l_[i] / moduli_.mu_s + 2.0 * m;
+      off_[i] = -m * (tx * sx + ty * sy);
+    }
+    solve_cyclic_tridiagonal_symmetric(off_, diag_, rx_, ry_, work_, z_);
+    for (std::size_t i = 0; i < n_; ++i) {
+      tau_v_[i] = rx_[i];
+      tau_[i] = moduli_.E_s * (lambda_[i] - 1.0) + tau_v_[i];  // (28), (30), (31)
+    }
+    // the viscous node forces, for the next prediction
+    for (std::size_t i = 0; i < n_; ++i) {
+      const std::size_t j = (i + 1) % n_, k = (i + n_ - 1) % n_;
+      const double tx = (xy_[2 * j] - xy_[2 * i]) / l_[i], ty = (xy_[2 * j + 1] - xy_[2 * i + 1]) / l_[i];
+      const double px = (xy_[2 * i] - xy_[2 * k]) / l_[k], py = (xy_[2 * i + 1] - xy_[2 * k + 1]) / l_[k];
+      Fv_[2 * i] = tau_v_[i] * tx - tau_v_[k] * px;
+      Fv_[2 * i + 1] = tau_v_[i] * ty - tau_v_[k] * py;
+    }
+  } else {
+    // (31): d lambda / dt by the one-sided second-order difference (3 l - 4 l1 + l2) / (2 dt),
+    // first order on the second step, zero on the first (the membrane starts at rest).
+    for (std::size_t i = 0; i < n_; ++i) {
+      double rate = 0.0;
+      if (history_ >= 2)
+        rate = (3.0 * lambda_[i] - 4.0 * lambda_prev1_[i] + lambda_prev2_[i]) / (2.0 * dt);
+      else if (history_ == 1)
+        rate = (lambda_[i] - lambda_prev1_[i]) / dt;
+      tau_[i] = moduli_.E_s * (lambda_[i] - 1.0) + moduli_.mu_s * rate / lambda_[i];  // (28), (30), (31)
+    }
+    for (std::size_t i = 0; i < n_; ++i) tau_v_[i] = tau_[i] - moduli_.E_s * (lambda_[i] - 1.0);
   }
   if (advance_history) {
     lambda_prev2_.swap(lambda_prev1_);
     lambda_prev1_ = lambda_;
     history_ = std::min(history_ + 1, 2);
+    if (implicit_) Fv_prev_ = Fv_;
   }
   const auto& kappa = spline_.curvatures();
   for (std::size_t i = 0; i < n_; ++i) m_[i] = moduli_.E_B * (kappa[i] - kappa0_[i]);  // (32)

@@ -3,7 +3,9 @@
 //   in-plane tension   tau = tau_e + tau_v                             (28)
 //     Hooke            tau_e = E_s (lambda - 1),  lambda = l / l0       (29)-(30)
 //     Kelvin-Voigt     tau_v = mu_s (1/lambda) d lambda / dt            (31)
-//                      (one-sided second-order backward difference in time)
+//                      (one-sided second-order backward difference in time), or, once
+//                      set_node_velocity() has been called, from the node velocities treated
+//                      implicitly (see set_node_velocity): stable for large mu_s.
 //   transverse shear   q = dm/dl,  m = E_B (kappa - kappa0)              (32)
 //   curvature          periodic parametric cubic spline (PeriodicSpline), kappa0 = initial kappa.
 // The load (27) f = -d/dl (tau t + q n) is the traction jump; the membrane pushes the fluid with
@@ -45,6 +47,19 @@ class Membrane {
   void compute_forces(double dt, bool advance_history = true);
   const std::vector<double>& forces() const { return force_; }
 
+  // Implicit Kelvin-Voigt (31) for the immersed-boundary coupling. U: the node velocities
+  // that moved the nodes onto the current positions (flat, 2 n), mobility m: how much a node
+  // force F changes that node's interpolated velocity within the step (U ~ ... + m F).
+  // compute_forces() then uses the strain rate of the predicted velocity
+  //   P = U - m Fv_prev + m Fv,  Fv = -D^T W D P,  (D P)_i = t_i . (P_{i+1} - P_i),  W_i = mu_s / l_i,
+  // i.e. tau_v,i = mu_s t_i . (P_{i+1} - P_i) / l_i = mu_s (1/lambda) dlambda/dt of the motion P,
+  // solving (diag(l_i/mu_s) + m D D^T) tau_v = D (U - m Fv_prev) (cyclic tridiagonal). When the
+  // viscous forces stop changing, P = U exactly (no bias in steady states); rigid motion gives
+  // D U = 0, so tau_v = 0. With m = 0 it is the explicit rate of U. Until the first call the
+  // backward difference of the stretches is used.
+  void set_node_velocity(const std::vector<double>& U, double mobility);
+  const std::vector<double>& viscous_tension() const { return tau_v_; }  // per segment, last call
+
   // State from the last compute_forces():
   const std::vector<double>& stretch() const { return lambda_; }          // per segment (29)
   const std::vector<double>& tension() const { return tau_; }             // per segment (28)
@@ -71,6 +86,10 @@ class Membrane {
   std::vector<double> l_, lambda_, tau_, m_, q_, force_;
   std::vector<double> lambda_prev1_, lambda_prev2_;  // stretches one and two steps back
   int history_ = 0;                                   // how many of them exist
+  // implicit Kelvin-Voigt state
+  bool implicit_ = false;
+  double mobility_ = 0;
+  std::vector<double> U_, Fv_prev_, Fv_, tau_v_, off_, diag_, rx_, ry_, work_, z_;
 };
 
 }  // namespace capsule::membrane2d
