@@ -2,5 +2,7 @@
 // The solver's physics version: part of every member id. Bump it whenever a change
 // alters the numbers a scene produces, so studies rerun members made by older physics.
 namespace capsule {
-inline constexpr const char* physics_version = "2";  // 2: MRT energy and energy-square rates follow s_nu (stability at large tau)
+// 2: MRT energy and energy-square rates follow s_nu (stability at large tau).
+// 3: 2D Kelvin-Voigt membrane viscosity implicit in the node velocities.
+inline constexpr const char* physics_version = "3";
 }  // namespace capsule
