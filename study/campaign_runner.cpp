@@ -1,6 +1,7 @@
 #include "study/campaign_runner.hpp"
 
 #include <cerrno>
+#include <cstdlib>
 #include <chrono>
 #include <csignal>
 #include <cstring>
@@ -71,6 +72,9 @@ int run_and_wait(const std::vector<std::string>& argv) {
   if (pid == 0) {
     sigaction(SIGINT, &old_int, nullptr);
     sigaction(SIGTERM, &old_term, nullptr);
+    // GNU Parallel builds the command it sends over ssh around $SHELL; with SHELL unset
+    // (cron, CI, `env -i`) every remote member fails at once. /bin/sh is what it would pick.
+    if (std::getenv("SHELL") == nullptr) ::setenv("SHELL", "/bin/sh", 1);
     ::execvp(args[0], args.data());
     std::fprintf(stderr, "study: cannot run %s: %s\n", args[0], std::strerror(errno));
     ::_exit(127);
