@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 namespace capsule::ib {
 
@@ -40,10 +41,36 @@ inline double cosine_delta(double r) {
 // wrapped: the caller wraps periodic axes and drops nodes outside walled ones.
 struct DeltaStencil1D {
   int first = 0;
+  int width = 4;  // nodes first..first+width-1 carry the weights w[0..width-1]
   double w[4] = {0, 0, 0, 0};
 };
 
-enum class Kernel { cosine, peskin4 };
+enum class Kernel { cosine, peskin4, roma3, linear2 };
+
+// The scene's name for a kernel ("peskin4", "roma3", "linear2", "cosine"; Scene checks it).
+inline Kernel kernel_from_name(const std::string& name) {
+  if (name == "roma3") return Kernel::roma3;
+  if (name == "linear2") return Kernel::linear2;
+  if (name == "cosine") return Kernel::cosine;
+  return Kernel::peskin4;
+}
+
+// Support width in nodes along one axis.
+constexpr int kernel_width(Kernel k) { return k == Kernel::roma3 ? 3 : k == Kernel::linear2 ? 2 : 4; }
+
+// Roma, Peskin and Berger's 3-point kernel (J. Comput. Phys. 153 (1999) 509, eq. 6.3):
+//   (1 + sqrt(1 - 3 r^2)) / 3                    for |r| <= 1/2,
+//   (5 - 3|r| - sqrt(1 - 3 (1 - |r|)^2)) / 6     for 1/2 <= |r| <= 3/2.
+// Partition of unity and zero first moment for every offset, like peskin4, on a narrower support.
+inline double roma3_delta(double r) {
+  const double ar = std::abs(r);
+  if (ar <= 0.5) return (1.0 + std::sqrt(1.0 - 3.0 * ar * ar)) / 3.0;
+  if (ar <= 1.5) return (5.0 - 3.0 * ar - std::sqrt(std::max(0.0, 1.0 - 3.0 * (1.0 - ar) * (1.0 - ar)))) / 6.0;
+  return 0.0;
+}
+
+// The 2-point hat (linear interpolation): 1 - |r| for |r| <= 1.
+inline double linear2_delta(double r) { return std::max(0.0, 1.0 - std::abs(r)); }
 
 // Peskin's 4-point kernel (see above), |r| <= 2.
 inline double peskin4_delta(double r) {
@@ -55,6 +82,25 @@ inline double peskin4_delta(double r) {
 
 inline DeltaStencil1D delta_stencil(double x, Kernel kernel = Kernel::cosine) {
   DeltaStencil1D s;
+  if (kernel == Kernel::roma3) {
+    s.width = 3;
+    s.first = static_cast<int>(std::floor(x)) - 1;  // node floor(x) at floor(x) + 1/2 is the nearest
+    const double r1 = x - (s.first + 1.5);          // offset from the middle node, in [-1/2, 1/2)
+    s.w[1] = (1.0 + std::sqrt(std::max(0.0, 1.0 - 3.0 * r1 * r1))) / 3.0;
+    // the outer two follow from partition of unity and zero first moment: w0 - w2 = -r1
+    const double outer = 1.0 - s.w[1];
+    s.w[0] = 0.5 * (outer - r1);
+    s.w[2] = 0.5 * (outer + r1);
+    return s;
+  }
+  if (kernel == Kernel::linear2) {
+    s.width = 2;
+    s.first = static_cast<int>(std::floor(x - 0.5));
+    const double r0 = x - (s.first + 0.5);  // in [0, 1)
+    s.w[0] = 1.0 - r0;
+    s.w[1] = r0;
+    return s;
+  }
   if (kernel == Kernel::peskin4) {
     s.first = static_cast<int>(std::floor(x - 0.5)) - 1;
     const double r0 = x - (s.first + 0.5);  // in [1, 2): offsets r0, r0 - 1 in [0, 1), r0 - 2, r0 - 3

@@ -30,25 +30,26 @@ inline void for_each_support_node(const Grid& grid, const double* X, Kernel kern
   static_assert(Dim == 2 || Dim == 3, "2D or 3D");
   const DeltaStencil1D sx = delta_stencil(X[0], kernel);
   const DeltaStencil1D sy = delta_stencil(X[1], kernel);
+  const int width = sx.width;
   int ix[4];
-  for (int m = 0; m < 4; ++m) ix[m] = wrap(sx.first + m, grid.nx);
+  for (int m = 0; m < width; ++m) ix[m] = wrap(sx.first + m, grid.nx);
   if constexpr (Dim == 2) {
-    for (int b = 0; b < 4; ++b) {
+    for (int b = 0; b < width; ++b) {
       const int j = sy.first + b;
       if (j < 0 || j >= grid.ny) continue;
       const std::size_t row = static_cast<std::size_t>(grid.nx) * j;
-      for (int m = 0; m < 4; ++m) visit(row + ix[m], sx.w[m] * sy.w[b]);
+      for (int m = 0; m < width; ++m) visit(row + ix[m], sx.w[m] * sy.w[b]);
     }
   } else {
     const DeltaStencil1D sz = delta_stencil(X[2], kernel);
-    for (int c = 0; c < 4; ++c) {
+    for (int c = 0; c < width; ++c) {
       const int k = wrap(sz.first + c, grid.nz);
-      for (int b = 0; b < 4; ++b) {
+      for (int b = 0; b < width; ++b) {
         const int j = sy.first + b;
         if (j < 0 || j >= grid.ny) continue;
         const std::size_t row = grid.index(0, j, k);
         const double wyz = sy.w[b] * sz.w[c];
-        for (int m = 0; m < 4; ++m) visit(row + ix[m], sx.w[m] * wyz);
+        for (int m = 0; m < width; ++m) visit(row + ix[m], sx.w[m] * wyz);
       }
     }
   }

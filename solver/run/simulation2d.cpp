@@ -218,7 +218,7 @@ std::string run_simulation2d(const Scene& scene, io::MemberWriter& out, bool qui
   const Units& u = sim.units();
   record_units(out, scene, u);
   out.set_attribute("segments", static_cast<long>(scene.segments));
-  out.set_attribute("delta", std::string("Peskin 4-point (zero first moment), not the cosine (18): README"));
+  out.set_attribute("delta", std::string("peskin4: Peskin 4-point (zero first moment), not the cosine (18): README"));
   out.set_attribute("beta_tracked", std::string("node 0, initially at the end of the major axis; wrapped into (-pi, pi]"));
 
   const std::string status = run_output_loop(

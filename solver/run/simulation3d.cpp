@@ -44,9 +44,6 @@
 
 namespace capsule {
 
-// Peskin's 4-point kernel, as in 2D: the cosine kernel (18) has no zero first moment, so it
-// interpolates a linear shear with a lattice-locked error (README "The 2D capsule").
-constexpr ib::Kernel kKernel = ib::Kernel::peskin4;
 
 namespace m3 = membrane3d;
 
@@ -112,16 +109,16 @@ class Simulation3D {
     double* p[3] = {fluid_.force(0), fluid_.force(1), fluid_.force(2)};
     // The force field is zero except where the last step spread: clear only there.
     if (spread_from_.empty()) fluid_.clear_force();
-    else ib::clear_support<3>(grid_, spread_from_.data(), n, p, kKernel);
+    else ib::clear_support<3>(grid_, spread_from_.data(), n, p, kernel_);
     spread_from_.assign(positions(), positions() + 3 * n);
-    ib::spread<3>(grid_, positions(), reinterpret_cast<const double*>(force_.data()), n, p, kKernel);  // (21)
+    ib::spread<3>(grid_, positions(), reinterpret_cast<const double*>(force_.data()), n, p, kernel_);  // (21)
     const double wall = 0.5 * units_.shear_rate * grid_.ny * shear_factor;                  // k H / 2 (1)
     fluid_.set_wall_velocity(-wall, wall);
     auto t1 = Clock::now();
     fluid_.step();
     auto t2 = Clock::now();
     const double* u[3] = {fluid_.velocity(0), fluid_.velocity(1), fluid_.velocity(2)};
-    ib::interpolate<3>(grid_, u, positions(), n, U_.data(), kKernel);  // (19)
+    ib::interpolate<3>(grid_, u, positions(), n, U_.data(), kernel_);  // (19)
     ib::advance<3>(positions(), U_.data(), n, 1.0);           // (20)
     if (contrast_) update_contrast();
     timings_.coupling += std::chrono::duration<double>((t1 - t0) + (Clock::now() - t2)).count();
@@ -206,6 +203,7 @@ class Simulation3D {
     m3::rotate_about_z_and_translate(reference, incline, centre);
 
     m3::MembraneParameters p;
+    kernel_ = ib::kernel_from_name(s.kernel);
     shear_modulus_ = shear_modulus_3d(s, units_);
     p.law = m3::Constitutive{m3::elastic_law_from_name(s.law), shear_modulus_, s.C};
     if (s.eta > 0) {
@@ -259,6 +257,10 @@ class Simulation3D {
   std::vector<double> spread_from_;  // node positions of the last spreading
   m3::PhaseTracker phase_;
   double E_B_ = 0, K_v_ = 0, area0_ = 0, shear_modulus_ = 0;
+  // IB delta (scene resolution.kernel, solver/ib/delta.hpp). Default Peskin's 4-point kernel, as
+  // in 2D: the cosine kernel (18) has no zero first moment, so it interpolates a linear shear
+  // with a lattice-locked error (README "The 2D capsule").
+  ib::Kernel kernel_ = ib::Kernel::peskin4;
   long steps_ = 0;
   Timings timings_;
 };
@@ -292,7 +294,9 @@ std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, bool qui
   out.set_attribute("G", scene.G);
   out.set_attribute("reference_case", scene.reference_case);
   out.set_attribute("viscoelastic", scene.eta > 0 ? std::string("standard linear solid (63)-(67), tau_m = mu_s/E_m") : std::string("none"));
-  out.set_attribute("delta", std::string("Peskin 4-point (zero first moment), not the cosine (18): README"));
+  out.set_attribute("delta", scene.kernel == "peskin4"
+                                 ? std::string("peskin4: Peskin 4-point (zero first moment), not the cosine (18): README")
+                                 : scene.kernel);
   out.set_attribute("beta_tracked", std::string("5 vertices near the shear plane through the centroid, Gamma(0) = 0, pi/8, pi/4, 3pi/8, pi/2; continuous modulo pi"));
 
   std::vector<int> triangles;

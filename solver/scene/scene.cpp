@@ -215,7 +215,11 @@ Scene Scene::from_json(const json& j, const std::string& source) {
                "0 (chosen by the solver) or [0.505, 10]");
       s.tau = t.get<double>();
     }
-    q.refuse_unknown({"a", "domain", "segments", "mesh_level", "tau"});
+    s.kernel = q.choice("kernel", std::string("peskin4"), {"peskin4", "roma3", "linear2", "cosine"});
+    // The 2D driver's implicit Kelvin-Voigt step uses the self-mobility of peskin4 (simulation2d.cpp).
+    if (s.dim == 2 && s.kernel != "peskin4")
+      q.fail("kernel", "kernel \"" + s.kernel + "\" is 3D only", "\"peskin4\" in 2D");
+    q.refuse_unknown({"a", "domain", "segments", "mesh_level", "tau", "kernel"});
   }
   {
     json proto = r.object("protocol", true);
@@ -276,7 +280,7 @@ json Scene::to_json() const {
   j["volume_penalty"] = volume_penalty;
   j["power_law"] = {{"K", power_law_K}, {"n", power_law_n}};
   j["resolution"] = {{"a", a}, {"domain", domain}, {"segments", segments},
-                     {"mesh_level", mesh_level}, {"tau", tau}};
+                     {"mesh_level", mesh_level}, {"tau", tau}, {"kernel", kernel}};
   j["protocol"] = {{"shear", phase_json(shear, true)}, {"recover", phase_json(recover, false)}};
   j["output"] = {{"interval_kt", output_interval_kt}, {"shapes_at_kt", shapes_at_kt},
                  {"snapshots", snapshots}};

@@ -50,6 +50,7 @@ struct Scene {
   int segments = 140;          // 2D membrane segments
   int mesh_level = 4;          // 3D icosahedron subdivisions (4 -> 2562 vertices)
   double tau = 0;              // relaxation time; 0 = chosen by the solver
+  std::string kernel = "peskin4";  // IB delta (solver/ib/delta.hpp): peskin4, roma3, linear2, cosine
   PhaseSpec shear;
   PhaseSpec recover;
   double output_interval_kt = 0.05;

@@ -28,6 +28,9 @@ TEST_CASE("a minimal scene gets the documented defaults", "[scene]") {
   j["shape"] = "biconcave";
   Scene t = Scene::from_json(j, "t.json");
   CHECK(t.law == "skalak");
+  CHECK(t.kernel == "peskin4");
+  j["resolution"] = {{"kernel", "roma3"}};
+  CHECK(Scene::from_json(j, "t.json").kernel == "roma3");
   CHECK(t.grid() == std::vector<int>{100, 100, 80});
 }
 
@@ -63,6 +66,10 @@ TEST_CASE("bad scenes are refused with the file, the key and the allowed range",
       {"time without kt", [](json& j) { j["protocol"]["recover"].erase("kt"); }, "protocol.recover.kt: missing required key"},
       {"domain length", [](json& j) { j["resolution"] = {{"domain", {16, 12, 8}}}; }, "resolution.domain: expected 2..2 entries"},
       {"case on a 2D scene", [](json& j) { j["reference_case"] = "A"; }, "reference_case: unknown value"},
+      {"unknown kernel", [](json& j) { j["resolution"] = {{"kernel", "gauss"}}; },
+       "resolution.kernel: unknown value \"gauss\" (allowed: peskin4 | roma3 | linear2 | cosine)"},
+      {"3D-only kernel in 2D", [](json& j) { j["resolution"] = {{"kernel", "roma3"}}; },
+       "resolution.kernel: kernel \"roma3\" is 3D only (allowed: \"peskin4\" in 2D)"},
   };
   for (const auto& c : cases) {
     SECTION(c.what) {

@@ -284,3 +284,71 @@ TEST_CASE("viscosity contrast in 3D: sphere gives mu_c inside, mu_a outside", "[
   INFO("worst relative viscosity error " << worst);
   REQUIRE(worst < 0.02);
 }
+
+TEST_CASE("narrow kernels roma3 and linear2: closed forms, unity, zero first moment", "[ib]") {
+  // roma3 (Roma, Peskin and Berger 1999): 3 nodes, sum of squares 1/2 for every offset;
+  // linear2 (hat): 2 nodes. Both interpolate linear fields exactly, like peskin4.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-50.0, 50.0);
+  for (Kernel k : {Kernel::roma3, Kernel::linear2}) {
+    for (int t = 0; t < 1000; ++t) {
+      const double x = u(rng);
+      const DeltaStencil1D s = delta_stencil(x, k);
+      REQUIRE(s.width == kernel_width(k));
+      double sum = 0, m1 = 0, sq = 0;
+      for (int m = 0; m < s.width; ++m) {
+        const double r = x - (s.first + m + 0.5);
+        REQUIRE(s.w[m] == Approx(k == Kernel::roma3 ? roma3_delta(r) : linear2_delta(r)).margin(1e-14));
+        sum += s.w[m];
+        m1 += s.w[m] * r;
+        sq += s.w[m] * s.w[m];
+      }
+      // the nodes outside the stencil carry no weight of the closed form
+      REQUIRE((k == Kernel::roma3 ? roma3_delta(x - (s.first - 1 + 0.5)) : linear2_delta(x - (s.first - 1 + 0.5))) ==
+              Approx(0.0).margin(1e-14));
+      REQUIRE(sum == Approx(1.0).margin(1e-14));  // rounding only
+      REQUIRE(m1 == Approx(0.0).margin(1e-13));   // rounding only
+      if (k == Kernel::roma3) REQUIRE(sq == Approx(0.5).margin(1e-14));
+    }
+  }
+  REQUIRE(kernel_from_name("roma3") == Kernel::roma3);
+  REQUIRE(kernel_from_name("linear2") == Kernel::linear2);
+  REQUIRE(kernel_from_name("peskin4") == Kernel::peskin4);
+  REQUIRE(kernel_from_name("cosine") == Kernel::cosine);
+}
+
+TEST_CASE("every kernel interpolates a linear field exactly and spreads adjointly in 3D", "[ib]") {
+  const Grid g{16, 14, 12};
+  std::vector<double> ux(g.size()), uy(g.size()), uz(g.size());
+  for (int k = 0; k < g.nz; ++k)
+    for (int j = 0; j < g.ny; ++j)
+      for (int i = 0; i < g.nx; ++i) {
+        const std::size_t n = g.index(i, j, k);
+        ux[n] = 0.2 + 0.01 * (j + 0.5);  // a shear flow
+        uy[n] = -0.03 * (k + 0.5);
+        uz[n] = 0.005 * (i + 0.5);
+      }
+  const double* u[3] = {ux.data(), uy.data(), uz.data()};
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<double> p(4.0, 10.0);
+  const std::size_t n = 20;
+  std::vector<double> X(3 * n), U(3 * n), F(3 * n);
+  for (std::size_t c = 0; c < 3 * n; ++c) X[c] = p(rng), F[c] = std::sin(double(c));
+  for (Kernel k : {Kernel::peskin4, Kernel::roma3, Kernel::linear2}) {
+    interpolate<3>(g, u, X.data(), n, U.data(), k);
+    for (std::size_t c = 0; c < n; ++c) {
+      REQUIRE(U[3 * c] == Approx(0.2 + 0.01 * X[3 * c + 1]).margin(1e-14));  // rounding only
+      REQUIRE(U[3 * c + 1] == Approx(-0.03 * X[3 * c + 2]).margin(1e-14));
+      REQUIRE(U[3 * c + 2] == Approx(0.005 * X[3 * c]).margin(1e-14));
+    }
+    std::vector<double> p0(g.size()), p1(g.size()), p2(g.size());
+    double* q[3] = {p0.data(), p1.data(), p2.data()};
+    spread<3>(g, X.data(), F.data(), n, q, k);
+    double lhs = 0, rhs = 0;
+    for (std::size_t i = 0; i < g.size(); ++i) lhs += p0[i] * ux[i] + p1[i] * uy[i] + p2[i] * uz[i];
+    for (std::size_t c = 0; c < 3 * n; ++c) rhs += F[c] * U[c];
+    REQUIRE(lhs == Approx(rhs).margin(1e-12));  // adjoint: the same weights both ways
+    clear_support<3>(g, X.data(), n, q, k);      // undoes exactly the nodes spread() touched
+    for (std::size_t i = 0; i < g.size(); ++i) REQUIRE((p0[i] == 0.0 && p1[i] == 0.0 && p2[i] == 0.0));
+  }
+}
