@@ -88,6 +88,37 @@ for t in data["tables"]:
     fig.tight_layout()
     fig.savefig(os.path.join(out, t["name"] + ".png"), dpi=120)
     plt.close(fig)
+
+# Figs. 41-53: central slices at theta = 0, xy-plane (left) and yz-plane (right), one line
+# per stored kt; y is vertical in both panels, both drawn to the same scale.
+for s in data.get("slices", []):
+    fig, axes = plt.subplots(1, 2, figsize=(7.5, 3.8))
+    unit = s["unit"]
+    lim = 0.0
+    for i, shape in enumerate(s["shapes"]):
+        color = "C%d" % (i % 10)
+        for ax, plane in zip(axes, ("xy", "yz")):
+            for j, loop in enumerate(shape[plane]):
+                label = "kt = %g" % shape["kt"] if (plane == "xy" and j == 0) else None
+                ax.plot(loop["u"], loop["v"], "-", color=color, lw=1.0, label=label)
+                lim = max([lim] + [abs(x) for x in loop["u"]] + [abs(x) for x in loop["v"]])
+    lim = 1.08 * lim if lim > 0 else 1.0
+    for ax, xlabel in zip(axes, ("$x/%s$" % unit, "$z/%s$" % unit)):
+        ax.set_xlim(-lim, lim)
+        ax.set_ylim(-lim, lim)
+        ax.set_aspect("equal")
+        ax.axhline(0, color="0.85", lw=0.5)
+        ax.axvline(0, color="0.85", lw=0.5)
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel("$y/%s$" % unit)
+    axes[0].set_title("xy-plane", fontsize=8)
+    axes[1].set_title("yz-plane", fontsize=8)
+    if s["shapes"]:
+        axes[0].legend(fontsize=7)
+    fig.suptitle(s["title"], fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "member_" + s["slug"] + "_slices.png"), dpi=120)
+    plt.close(fig)
 )py";
   return text;
 }

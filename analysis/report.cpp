@@ -7,6 +7,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
@@ -16,6 +17,7 @@
 #include "analysis/member_fits.hpp"
 #include "analysis/plot_script.hpp"
 #include "analysis/scene_parameter.hpp"
+#include "analysis/slices_table.hpp"
 #include "analysis/table.hpp"
 #include "solver/io/member_file.hpp"
 
@@ -35,9 +37,19 @@ struct MemberAnalysis {
   MemberFits fits;
   std::vector<double> kt, D;                       // for figures
   std::map<std::string, double> markers;
+  MemberSlices slices;                             // 3D members with stored shapes (Figs. 41-53)
+  std::string slices_note;                         // why a 3D member's shapes could not be sliced
 };
 
 std::string case_label(const std::string& c) { return c.empty() ? "(all)" : c; }
+
+// A slug made safe to name a file: [A-Za-z0-9_.-] kept, anything else becomes '_'.
+std::string file_slug(const std::string& slug) {
+  std::string out = slug;
+  for (char& ch : out)
+    if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_' && ch != '.' && ch != '-') ch = '_';
+  return out;
+}
 
 double parameter(const MemberAnalysis& m, const std::string& name) {
   const auto it = m.parameters.find(name);
@@ -55,19 +67,20 @@ MemberAnalysis analyse_member(const MemberRef& ref, const AnalysisBlock& block, 
   MemberAnalysis m;
   m.ref = ref;
   nlohmann::json scene = ref.scene;
+  std::optional<io::MemberData> data;
   if (ref.path.empty() || !fs::exists(ref.path)) {
     m.status = fs::exists(ref.path + ".partial") ? "no final member file (only .partial: running or killed)"
                                                  : "member file missing (not run)";
     m.fits = failed_member(block.fits, m.status);
   } else {
     try {
-      const io::MemberData data = io::read_member(ref.path);
-      m.status = data.status;
-      m.fits = fit_member(data, block.fits);
-      if (const auto it = data.series.find("kt"); it != data.series.end()) m.kt = it->second;
-      if (const auto it = data.series.find("D_xy"); it != data.series.end()) m.D = it->second;
-      m.markers = data.markers;
-      if ((scene.is_null() || scene.empty()) && data.attributes.contains("scene")) scene = data.attributes["scene"];
+      data.emplace(io::read_member(ref.path));
+      m.status = data->status;
+      m.fits = fit_member(*data, block.fits);
+      if (const auto it = data->series.find("kt"); it != data->series.end()) m.kt = it->second;
+      if (const auto it = data->series.find("D_xy"); it != data->series.end()) m.D = it->second;
+      m.markers = data->markers;
+      if ((scene.is_null() || scene.empty()) && data->attributes.contains("scene")) scene = data->attributes["scene"];
     } catch (const std::exception& e) {
       m.status = std::string("unreadable: ") + e.what();
       m.fits = failed_member(block.fits, m.status);
@@ -77,6 +90,16 @@ MemberAnalysis analyse_member(const MemberRef& ref, const AnalysisBlock& block, 
     const SceneValue v = scene_parameter(scene, name, block.parameters);
     if (v.found) m.parameters[name] = v.value;
     else m.missing[name] = v.reason;
+  }
+  if (data && has_3d_shapes(*data)) {
+    // Lengths in units of the scene's radius a (resolution.a); member_slices falls back to
+    // the volume-equivalent radius when the scene has none.
+    const SceneValue a = scene_parameter(scene, "a", block.parameters);
+    try {
+      m.slices = member_slices(*data, a.found ? a.value : k_nan);
+    } catch (const std::exception& e) {
+      m.slices_note = std::string("shapes not sliced: ") + e.what();
+    }
   }
   return m;
 }
@@ -251,6 +274,8 @@ ReportSummary write_report(const ReportRequest& request) {
     for (const auto& [k, v] : m.parameters) j["parameters"][k] = json_number(v);
     j["fits"] = nlohmann::json::object();
     for (const auto& [k, f] : m.fits) j["fits"][k] = to_json(f);
+    if (!m.slices.empty()) j["slices"] = {{"file", "slices_" + file_slug(m.ref.slug) + ".csv"}, {"unit", m.slices.unit}};
+    if (!m.slices_note.empty()) j["slices_note"] = m.slices_note;
     fits_json["members"].push_back(j);
   }
 
@@ -258,6 +283,10 @@ ReportSummary write_report(const ReportRequest& request) {
     summary.files.insert(summary.files.end(), files.begin(), files.end());
   };
   append(member_fits_table(members).write(out.string(), "member_fits"));
+  // Central slices of 3D members' stored shapes (Figs. 41-53), beside the member table.
+  for (const auto& m : members)
+    if (!m.slices.empty())
+      write_text(out / ("slices_" + file_slug(m.ref.slug) + ".csv"), slices_csv(m.slices), summary.files);
 
   // Characteristic-time tables.
   nlohmann::json figure_tables = nlohmann::json::array();
@@ -361,13 +390,17 @@ ReportSummary write_report(const ReportRequest& request) {
   }
   const fs::path fig_dir = out / "figures";
   fs::create_directories(fig_dir);
-  nlohmann::json fig{{"tables", figure_tables}, {"members", nlohmann::json::array()}};
+  nlohmann::json fig{{"tables", figure_tables}, {"members", nlohmann::json::array()}, {"slices", nlohmann::json::array()}};
+  for (const auto& m : members) {
+    if (m.slices.empty()) continue;
+    nlohmann::json sj = slices_figure_json(m.slices);
+    sj["slug"] = file_slug(m.ref.slug);
+    sj["title"] = case_label(m.ref.case_name) + " / " + m.ref.slug + ": central slices at theta = 0";
+    fig["slices"].push_back(sj);
+  }
   for (const auto& m : members) {
     if (m.kt.empty() || m.kt.size() != m.D.size()) continue;
-    std::string file_slug = m.ref.slug;  // names a file: keep it to [A-Za-z0-9_.-]
-    for (char& ch : file_slug)
-      if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_' && ch != '.' && ch != '-') ch = '_';
-    nlohmann::json mj{{"slug", file_slug}, {"kt", m.kt}, {"D_xy", m.D}, {"curves", nlohmann::json::array()}};
+    nlohmann::json mj{{"slug", file_slug(m.ref.slug)}, {"kt", m.kt}, {"D_xy", m.D}, {"curves", nlohmann::json::array()}};
     mj["title"] = case_label(m.ref.case_name) + " / " + m.ref.slug + " (" + m.status + ")";
     mj["markers"] = nlohmann::json::object();
     for (const auto& [k, v] : m.markers)
