@@ -11,10 +11,24 @@
 #include <string>
 
 #include <nlohmann/json.hpp>
+#include <unistd.h>
 
 #include "solver/io/member_file.hpp"
 
 namespace capsule::analysis::testing {
+
+// A scratch folder under the system temp dir, unique per process and tag, removed when done.
+struct TempDir {
+  std::filesystem::path path;
+  explicit TempDir(const std::string& tag)
+      : path(std::filesystem::temp_directory_path() / ("capsule_analysis_" + tag + "_" + std::to_string(::getpid()))) {
+    std::filesystem::remove_all(path);
+    std::filesystem::create_directories(path);
+  }
+  ~TempDir() { std::filesystem::remove_all(path); }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+};
 
 struct SyntheticMember {
   double Ca = 0.05, E_b = 0.0, V = 1.0, eta = 0.0;

@@ -20,6 +20,7 @@ using namespace capsule::analysis;
 using capsule::analysis::testing::SyntheticMember;
 using capsule::analysis::testing::lines;
 using capsule::analysis::testing::slurp;
+using capsule::analysis::testing::TempDir;
 using Catch::Matchers::Contains;
 using Catch::Matchers::EndsWith;
 using Catch::Matchers::StartsWith;
@@ -36,16 +37,6 @@ std::vector<std::string> cells(const std::string& line) {
   while (std::getline(in, cell, ',')) out.push_back(cell);
   return out;
 }
-
-struct TempDir {
-  fs::path path;
-  explicit TempDir(const std::string& tag)
-      : path(fs::temp_directory_path() / ("capsule_cmpmembers_" + tag + "_" + std::to_string(::getpid()))) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
 
 // A Ca sweep of case "sphere": Ca = 0.02, 0.05, 0.1 complete, Ca = 0.2 unstable, plus `extra_Ca`
 // when positive. The Ca = 0.05 member recovers with `k_tau_r_005`.
@@ -86,7 +77,7 @@ const std::vector<std::string>* find_row(const std::vector<std::vector<std::stri
 }  // namespace
 
 TEST_CASE("compare_campaigns sets matched members' fitted times side by side", "[analysis]") {
-  TempDir tmp("sweep");
+  TempDir tmp("cmpmembers_sweep");
   // "fine" recovers the Ca = 0.05 member with k tau_r = 0.9 instead of 0.65, and has an extra Ca = 0.3.
   const ReportRequest coarse = ca_sweep(tmp.path, "coarse", 0.65, 0.0);
   const ReportRequest fine = ca_sweep(tmp.path, "fine", 0.9, 0.3);

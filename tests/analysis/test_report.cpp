@@ -19,6 +19,7 @@ using namespace capsule::analysis;
 using capsule::analysis::testing::SyntheticMember;
 using capsule::analysis::testing::lines;
 using capsule::analysis::testing::slurp;
+using capsule::analysis::testing::TempDir;
 using Catch::Matchers::Contains;
 using Catch::Matchers::EndsWith;
 using Catch::Matchers::StartsWith;
@@ -27,15 +28,6 @@ namespace fs = std::filesystem;
 namespace {
 
 
-struct TempDir {
-  fs::path path;
-  explicit TempDir(const std::string& tag)
-      : path(fs::temp_directory_path() / ("capsule_analysis_" + tag + "_" + std::to_string(::getpid()))) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
 
 // A (eta, V) grid of 6 complete members with k tau = a eta + b V + c exactly, one
 // unstable member and one never run.

@@ -20,21 +20,13 @@
 using namespace capsule::analysis;
 using capsule::analysis::testing::lines;
 using capsule::analysis::testing::slurp;
+using capsule::analysis::testing::TempDir;
 using Catch::Matchers::Contains;
 namespace fs = std::filesystem;
 namespace m3 = capsule::membrane3d;
 
 namespace {
 
-struct TempDir {
-  fs::path path;
-  explicit TempDir(const std::string& tag)
-      : path(fs::temp_directory_path() / ("capsule_analysis_" + tag + "_" + std::to_string(::getpid()))) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
 
 std::vector<double> flat(const m3::Mesh& m) {
   std::vector<double> xyz;
