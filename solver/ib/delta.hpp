@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 #include <string>
 
 namespace capsule::ib {
@@ -47,12 +48,13 @@ struct DeltaStencil1D {
 
 enum class Kernel { cosine, peskin4, roma3, linear2 };
 
-// The scene's name for a kernel ("peskin4", "roma3", "linear2", "cosine"; Scene checks it).
+// The scene's name for a kernel (resolution.kernel); Scene refuses any other name first.
 inline Kernel kernel_from_name(const std::string& name) {
+  if (name == "peskin4") return Kernel::peskin4;
   if (name == "roma3") return Kernel::roma3;
   if (name == "linear2") return Kernel::linear2;
   if (name == "cosine") return Kernel::cosine;
-  return Kernel::peskin4;
+  throw std::invalid_argument("unknown IB kernel '" + name + "' (allowed: peskin4, roma3, linear2, cosine)");
 }
 
 // Support width in nodes along one axis.
@@ -82,8 +84,8 @@ inline double peskin4_delta(double r) {
 
 inline DeltaStencil1D delta_stencil(double x, Kernel kernel = Kernel::cosine) {
   DeltaStencil1D s;
+  s.width = kernel_width(kernel);
   if (kernel == Kernel::roma3) {
-    s.width = 3;
     s.first = static_cast<int>(std::floor(x)) - 1;  // node floor(x) at floor(x) + 1/2 is the nearest
     const double r1 = x - (s.first + 1.5);          // offset from the middle node, in [-1/2, 1/2)
     s.w[1] = (1.0 + std::sqrt(std::max(0.0, 1.0 - 3.0 * r1 * r1))) / 3.0;
@@ -94,7 +96,6 @@ inline DeltaStencil1D delta_stencil(double x, Kernel kernel = Kernel::cosine) {
     return s;
   }
   if (kernel == Kernel::linear2) {
-    s.width = 2;
     s.first = static_cast<int>(std::floor(x - 0.5));
     const double r0 = x - (s.first + 0.5);  // in [0, 1)
     s.w[0] = 1.0 - r0;

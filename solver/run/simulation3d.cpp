@@ -44,7 +44,6 @@
 
 namespace capsule {
 
-
 namespace m3 = membrane3d;
 
 namespace {

@@ -315,6 +315,7 @@ TEST_CASE("narrow kernels roma3 and linear2: closed forms, unity, zero first mom
   REQUIRE(kernel_from_name("linear2") == Kernel::linear2);
   REQUIRE(kernel_from_name("peskin4") == Kernel::peskin4);
   REQUIRE(kernel_from_name("cosine") == Kernel::cosine);
+  REQUIRE_THROWS_AS(kernel_from_name("gauss"), std::invalid_argument);  // no silent fallback
 }
 
 TEST_CASE("every kernel interpolates a linear field exactly and spreads adjointly in 3D", "[ib]") {
