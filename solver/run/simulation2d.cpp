@@ -76,8 +76,9 @@ struct Simulation2D::Impl {
 
 Simulation2D::Simulation2D(const Scene& scene, bool start_in_shear) {
   if (scene.dim != 2) throw std::invalid_argument("Simulation2D: scene.dim must be 2");
-  // Requested physics is never silently dropped: the power law (99)-(104) is not built yet.
-  if (scene.power_law_K > 0) throw std::invalid_argument("power-law membrane viscosity is not implemented in 2D");
+  // Requested physics is never silently dropped: the power law (99)-(104) is built for the 3D membrane only.
+  if (scene.power_law_K > 0)
+    throw std::invalid_argument("power_law.K > 0: the power-law membrane viscosity (Sec. 5.2) is a 3D model; in 2D use eta (Kelvin-Voigt)");
   const Units u = units_for(scene, choose_tau(scene));
   impl_ = std::make_unique<Impl>(scene, u, scene.grid());
   // Initial linear Couette flow (1), scaled like the walls.

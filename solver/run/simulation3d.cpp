@@ -28,8 +28,10 @@
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 #include "solver/ib/interpolation.hpp"
+#include "solver/ib/power_law_viscosity.hpp"
 #include "solver/ib/viscosity_contrast.hpp"
 #include "solver/lbm/fluid.hpp"
 #include "solver/membrane3d/membrane_forces.hpp"
@@ -64,7 +66,7 @@ static_assert(sizeof(m3::Vec3) == 3 * sizeof(double), "membrane positions are us
 double shear_modulus_3d(const Scene& s, const Units& u) { return s.law == "neo-hookean" ? u.E_s / 3.0 : u.E_s; }
 
 struct Timings {
-  double fluid = 0, coupling = 0;
+  double fluid = 0, coupling = 0, power_law = 0;
 };
 
 class Simulation3D {
@@ -73,18 +75,21 @@ class Simulation3D {
       : scene_(s), units_(units_for(s, choose_tau(s))), n_(s.grid()),
         grid_{n_[0], n_[1], n_[2]}, fluid_(n_[0], n_[1], n_[2], units_.nu) {
     if (s.dim != 3) throw std::invalid_argument("Simulation3D: scene.dim must be 3");
-    if (s.power_law_K > 0) throw std::invalid_argument("power-law membrane viscosity is not implemented in 3D");
     build_membrane();
     U_.assign(3 * mesh_.vertex_count(), 0.0);
-    if (s.V != 1.0) {
-      contrast_ = std::make_unique<ib::ViscosityContrast<3>>(grid_, units_.nu, units_.nu_inside);
-      update_contrast();
-    }
     const double k = units_.shear_rate, H = grid_.ny;
     const double f0 = Protocol(s).shear_factor(0.0);
     fluid_.initialise_velocity([&](double, double y, double) {
       return std::array<double, 3>{k * (y - 0.5 * H) * f0, 0.0, 0.0};  // linear Couette flow (1)
     });
+    // The viscosity field exists only for a contrast (V != 1) or a power-law membrane (K > 0).
+    if (s.V != 1.0) contrast_ = std::make_unique<ib::ViscosityContrast<3>>(grid_, units_.nu, units_.nu_inside);
+    if (s.power_law_K > 0) {
+      power_law_ = std::make_unique<ib::PowerLawViscosity<3>>(
+          grid_, kernel_, ib::PowerLawParameters{s.power_law_K, s.power_law_n, units_.nu, s.a, units_.shear_rate});
+      if (contrast_) base_nu_.assign(grid_.size(), units_.nu);
+    }
+    if (contrast_ || power_law_) update_viscosity();
     const auto d0 = m3::inertia_deformation(mesh_);
     phase_ = m3::PhaseTracker(mesh_, d0.centroid, d0.theta);
     area0_ = m3::surface_area(mesh_);
@@ -119,7 +124,7 @@ class Simulation3D {
     const double* u[3] = {fluid_.velocity(0), fluid_.velocity(1), fluid_.velocity(2)};
     ib::interpolate<3>(grid_, u, positions(), n, U_.data(), kernel_);  // (19)
     ib::advance<3>(positions(), U_.data(), n, 1.0);           // (20)
-    if (contrast_) update_contrast();
+    if (contrast_ || power_law_) update_viscosity();
     timings_.coupling += std::chrono::duration<double>((t1 - t0) + (Clock::now() - t2)).count();
     timings_.fluid += std::chrono::duration<double>(t2 - t1).count();
     ++steps_;
@@ -136,7 +141,7 @@ class Simulation3D {
                        fluid_.velocity(2)[i] * fluid_.velocity(2)[i];
       umax2 = std::max(umax2, s);
     }
-    return {
+    std::map<std::string, double> r = {
         {"kt", kt()},
         {"D_xy", d.D},                                              // inertia ellipsoid (38)
         {"D_extent", m3::extent_deformation(mesh_, d.centroid)},   // (r_max - r_min)/(r_max + r_min)
@@ -153,6 +158,8 @@ class Simulation3D {
         {"centroid_z", (d.centroid.z() - 0.5 * grid_.nz) / a},
         {"max_speed", std::sqrt(umax2)},
     };
+    if (power_law_) std::tie(r["gamma_min"], r["gamma_max"]) = gamma_range();
+    return r;
   }
 
   // "" when healthy, else the reason.
@@ -226,10 +233,37 @@ class Simulation3D {
     forces_ = m3::MembraneForces(reference, mesh_, std::move(p));
   }
 
-  void update_contrast() {
+  // The local viscosity (104): the fluid's own (mu_a, or the contrast (16) near the membrane)
+  // plus the spread power-law membrane viscosity (103). rho = 1, so nu = mu.
+  void update_viscosity() {
     const auto normals = m3::averaged_vertex_normals(mesh_);
-    contrast_->update(positions(), reinterpret_cast<const double*>(normals.data()), mesh_.vertex_count(),
-                      [&](std::size_t node, double nu) { fluid_.set_viscosity(node, nu); });
+    const double* nrm = reinterpret_cast<const double*>(normals.data());
+    const std::size_t n = mesh_.vertex_count();
+    if (power_law_) {
+      const auto t0 = Clock::now();
+      const auto areas = m3::voronoi_areas(mesh_);
+      const double* u[3] = {fluid_.velocity(0), fluid_.velocity(1), fluid_.velocity(2)};
+      power_law_->update(positions(), nrm, areas.data(), n, u);  // (99)-(103)
+      timings_.power_law += std::chrono::duration<double>(Clock::now() - t0).count();
+    }
+    auto added = [&](std::size_t node) { return power_law_ ? power_law_->field(node) : 0.0; };
+    if (contrast_)
+      contrast_->update(positions(), nrm, n, [&](std::size_t node, double nu) {
+        if (power_law_) base_nu_[node] = nu;
+        fluid_.set_viscosity(node, nu + added(node));
+      });
+    if (power_law_) {
+      auto base = [&](std::size_t node) { return contrast_ ? base_nu_[node] : units_.nu; };
+      for (std::size_t node : power_law_->previously_touched()) fluid_.set_viscosity(node, base(node) + added(node));
+      for (std::size_t node : power_law_->touched()) fluid_.set_viscosity(node, base(node) + added(node));
+    }
+  }
+
+  // Surface shear rate (101) over the membrane nodes, in units of k (power law only).
+  std::pair<double, double> gamma_range() const {
+    const auto& g = power_law_->gamma();
+    const auto [lo, hi] = std::minmax_element(g.begin(), g.end());
+    return {*lo / units_.shear_rate, *hi / units_.shear_rate};
   }
 
   // Triangles whose normal opposes the averaged normal of their own vertices.
@@ -252,6 +286,8 @@ class Simulation3D {
   m3::MembraneForces forces_;
   std::vector<m3::Vec3> force_;
   std::unique_ptr<ib::ViscosityContrast<3>> contrast_;
+  std::unique_ptr<ib::PowerLawViscosity<3>> power_law_;
+  std::vector<double> base_nu_;  // the contrast viscosity (16) per node, kept when both act
   std::vector<double> U_;
   std::vector<double> spread_from_;  // node positions of the last spreading
   m3::PhaseTracker phase_;
@@ -296,6 +332,10 @@ std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, bool qui
   out.set_attribute("delta", scene.kernel == "peskin4"
                                  ? std::string("peskin4: Peskin 4-point (zero first moment), not the cosine (18): README")
                                  : scene.kernel);
+  if (scene.power_law_K > 0)
+    out.set_attribute("power_law", std::string("mu_mem = K a mu_a (gamma/k)^(n - 1) (102), a surface viscosity like mu_s = eta a mu_a; gamma = sqrt(2 tr D^2) (101) of the "
+                                               "surface rate of deformation (99)-(100), in units of k, floored at 0.01; spread "
+                                               "with the Voronoi areas (103) and added to the fluid viscosity (104)"));
   out.set_attribute("beta_tracked", std::string("5 vertices near the shear plane through the centroid, Gamma(0) = 0, pi/8, pi/4, 3pi/8, pi/2; continuous modulo pi"));
 
   std::vector<int> triangles;
@@ -312,6 +352,7 @@ std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, bool qui
   out.set_attribute("steps", sim.steps());
   out.set_attribute("seconds_fluid", sim.timings().fluid);
   out.set_attribute("seconds_coupling", sim.timings().coupling);
+  out.set_attribute("seconds_power_law", sim.timings().power_law);
   out.set_attribute("seconds_membrane_elastic", sim.membrane_timings().elastic_s);
   out.set_attribute("seconds_membrane_curvature", sim.membrane_timings().curvature_s);
   out.set_attribute("seconds_membrane_bending", sim.membrane_timings().bending_s);
