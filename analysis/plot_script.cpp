@@ -66,6 +66,21 @@ for m in data["members"]:
     fig.savefig(os.path.join(out, "member_" + m["slug"] + ".png"), dpi=120)
     plt.close(fig)
 
+# Fig. 64: range of the surface shear rate (101) over a power-law membrane, units of k.
+for m in data["members"]:
+    if "gamma" not in m:
+        continue
+    fig, ax = plt.subplots(figsize=(5.5, 3.6))
+    ax.plot(m["kt"], m["gamma"]["max"], "k-", lw=1.0, label="max")
+    ax.plot(m["kt"], m["gamma"]["min"], "k--", lw=1.0, label="min")
+    ax.set_xlabel("kt")
+    ax.set_ylabel(r"$\gamma / k$")
+    ax.set_title(m["title"], fontsize=8)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "member_" + m["slug"] + "_gamma.png"), dpi=120)
+    plt.close(fig)
+
 # Figs. 15-20, 25-28, 33-36: characteristic times against the swept parameter.
 symbols = ["s", "^", "o", "v", "D", "x"]
 for t in data["tables"]:

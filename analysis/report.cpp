@@ -36,6 +36,7 @@ struct MemberAnalysis {
   std::map<std::string, std::string> missing;      // parameter -> why not found
   MemberFits fits;
   std::vector<double> kt, D;                       // for figures
+  std::vector<double> gamma_min, gamma_max;        // 3D power-law members: surface shear rate range (Fig. 64)
   std::map<std::string, double> markers;
   MemberSlices slices;                             // 3D members with stored shapes (Figs. 41-53)
   std::string slices_note;                         // why a 3D member's shapes could not be sliced
@@ -79,6 +80,9 @@ MemberAnalysis analyse_member(const MemberRef& ref, const AnalysisBlock& block, 
       m.fits = fit_member(*data, block.fits);
       if (const auto it = data->series.find("kt"); it != data->series.end()) m.kt = it->second;
       if (const auto it = data->series.find("D_xy"); it != data->series.end()) m.D = it->second;
+      if (const auto lo = data->series.find("gamma_min"), hi = data->series.find("gamma_max");
+          lo != data->series.end() && hi != data->series.end())
+        m.gamma_min = lo->second, m.gamma_max = hi->second;
       m.markers = data->markers;
       if ((scene.is_null() || scene.empty()) && data->attributes.contains("scene")) scene = data->attributes["scene"];
     } catch (const std::exception& e) {
@@ -402,6 +406,8 @@ ReportSummary write_report(const ReportRequest& request) {
     if (m.kt.empty() || m.kt.size() != m.D.size()) continue;
     nlohmann::json mj{{"slug", file_slug(m.ref.slug)}, {"kt", m.kt}, {"D_xy", m.D}, {"curves", nlohmann::json::array()}};
     mj["title"] = case_label(m.ref.case_name) + " / " + m.ref.slug + " (" + m.status + ")";
+    if (m.gamma_min.size() == m.kt.size() && m.gamma_max.size() == m.kt.size() && !m.gamma_min.empty())
+      mj["gamma"] = {{"min", m.gamma_min}, {"max", m.gamma_max}};
     mj["markers"] = nlohmann::json::object();
     for (const auto& [k, v] : m.markers)
       if (std::isfinite(v)) mj["markers"][k] = v;

@@ -1,5 +1,6 @@
-// write_report on 3D members with stored shapes: central slices (Figs. 41-53) written as
-// slices_<slug>.csv beside the member table and drawn as member_<slug>_slices.png.
+// write_report on 3D members: central slices of stored shapes (Figs. 41-53) written as
+// slices_<slug>.csv beside the member table and drawn as member_<slug>_slices.png; the surface
+// shear rate range of power-law members (Fig. 64) drawn as member_<slug>_gamma.png.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -35,9 +36,11 @@ std::vector<double> flat(const m3::Mesh& m) {
 }
 
 // A complete member with a response/recovery D_xy series (as the synthetic campaign) and the
-// given shapes. dim 3 shapes carry the icosphere's triangles.
+// given shapes. dim 3 shapes carry the icosphere's triangles. power_law: the gamma_min and
+// gamma_max columns of a power-law member.
 void write_member(const std::string& path, const nlohmann::json& scene, int dim,
-                  const std::vector<std::pair<double, std::vector<double>>>& shapes, const std::vector<int>& triangles) {
+                  const std::vector<std::pair<double, std::vector<double>>>& shapes, const std::vector<int>& triangles,
+                  bool power_law = false) {
   fs::create_directories(fs::path(path).parent_path());
   capsule::io::MemberWriter w(path);
   w.set_scene(scene);
@@ -46,7 +49,9 @@ void write_member(const std::string& path, const nlohmann::json& scene, int dim,
     const double t = 0.05 * i;
     const bool shear = t <= 6.0 + 1e-12;
     const double D = shear ? 0.3 * (1 - std::exp(-t / 0.5)) : 0.3 * std::exp(-(t - 6.0) / 0.6);
-    w.append({{"kt", t}, {"D_xy", D}, {"theta", 0.4}, {"shear_on", shear ? 1.0 : 0.0}});
+    std::map<std::string, double> row{{"kt", t}, {"D_xy", D}, {"theta", 0.4}, {"shear_on", shear ? 1.0 : 0.0}};
+    if (power_law) row["gamma_min"] = 0.01 + 0.001 * i, row["gamma_max"] = 0.3 + 0.001 * i;
+    w.append(row);
   }
   const double nan = std::nan("");
   w.set_markers({{"t_max", 6.0}, {"D_max", 0.3}, {"t_stop", 6.0}, {"D_stop", 0.3},
@@ -186,5 +191,43 @@ TEST_CASE("write_report writes central slices of 3D members' shapes in units of 
     CHECK(fs::exists(fig / "member_no_a_slices.png"));
     CHECK_FALSE(fs::exists(fig / "member_circle2d_slices.png"));
     CHECK(fs::exists(fig / "member_circle2d.png"));  // the 2D member's D_xy figure as before
+  }
+}
+
+TEST_CASE("write_report draws the surface shear rate range of power-law members (Fig. 64)", "[analysis]") {
+  TempDir tmp("gamma");
+  ReportRequest req;
+  req.campaign_name = "gamma";
+  req.out_dir = (tmp.path / "report").string();
+  req.analysis = {{"fits", {"response"}}, {"figures", true}};
+  const nlohmann::json scene{{"dim", 3}, {"Ca", 0.1}, {"E_b", 0.0}, {"V", 1.0}, {"eta", 0.0},
+                             {"power_law", {{"K", 10.0}, {"n", 0.64}}}};
+  const std::string pl = (tmp.path / "members" / "pl" / "member.h5").string();
+  const std::string el = (tmp.path / "members" / "el" / "member.h5").string();
+  write_member(pl, scene, 3, {}, {}, true);
+  write_member(el, scene, 3, {}, {}, false);
+  req.members.push_back({"idp", "power", pl, "", nlohmann::json()});
+  req.members.push_back({"ide", "elastic", el, "", nlohmann::json()});
+  const ReportSummary summary = write_report(req);
+  const fs::path fig = fs::path(req.out_dir) / "figures";
+  const auto fd = nlohmann::json::parse(slurp(fig / "figure_data.json"));
+  REQUIRE(fd["members"].size() == 2);
+  for (const auto& m : fd["members"]) {
+    INFO(m["slug"]);
+    if (m["slug"] == "power") {
+      REQUIRE(m.contains("gamma"));
+      CHECK(m["gamma"]["min"].size() == m["kt"].size());
+      CHECK(m["gamma"]["max"][0].get<double>() == Approx(0.3));
+      CHECK(m["gamma"]["min"].back().get<double>() == Approx(0.25));
+    } else {
+      CHECK_FALSE(m.contains("gamma"));
+    }
+  }
+  if (summary.figures_skipped) {
+    WARN("figures skipped: " << summary.figures_note);
+  } else {
+    CHECK(fs::exists(fig / "member_power_gamma.png"));
+    CHECK_FALSE(fs::exists(fig / "member_elastic_gamma.png"));
+    CHECK(fs::exists(fig / "member_power.png"));
   }
 }
