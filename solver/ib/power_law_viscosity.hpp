@@ -51,33 +51,40 @@ class PowerLawViscosity {
   using Tensor = std::array<std::array<double, Dim>, Dim>;  // g[d][e] = d u_d / d x_e
 
   PowerLawViscosity(Grid grid, Kernel kernel, PowerLawParameters p)
-      : grid_(grid), kernel_(kernel), p_(p), field_(grid.size(), 0.0), flag_(grid.size(), 0) {}
+      : grid_(grid), kernel_(kernel), p_(p), field_(grid.size(), 0.0), slot_(grid.size(), -1) {}
 
   // (99)-(103). X, normal: n * Dim doubles; area: n doubles; u: Dim lattice velocity arrays.
   void update(const double* X, const double* normal, const double* area, std::size_t n, const double* const* u) {
+    // The new support, each lattice node once (the supports of neighbouring vertices overlap
+    // about 30-fold), after clearing the previous one's field.
+    std::swap(previous_, touched_);
+    for (std::size_t node : previous_) field_[node] = 0.0, slot_[node] = -1;
+    touched_.clear();
+    for (std::size_t c = 0; c < n; ++c)
+      for_each_support_node<Dim>(grid_, X + Dim * c, kernel_, [&](std::size_t node, double) {
+        if (slot_[node] < 0) slot_[node] = static_cast<long>(touched_.size()), touched_.push_back(node);
+      });
+    // Centred-difference gradients, once per support node.
+    grad_.resize(touched_.size());
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < static_cast<long>(touched_.size()); ++i) grad_[i] = lattice_gradient(touched_[i], u);
     gamma_.resize(n);
     mu_.resize(n);
 #pragma omp parallel for schedule(static)
     for (long c = 0; c < static_cast<long>(n); ++c) {
       Tensor g{};
       for_each_support_node<Dim>(grid_, X + Dim * c, kernel_, [&](std::size_t node, double w) {
-        const Tensor gn = lattice_gradient(node, u);
+        const Tensor& gn = grad_[slot_[node]];
         for (int d = 0; d < Dim; ++d)
           for (int e = 0; e < Dim; ++e) g[d][e] += w * gn[d][e];  // (99)
       });
       gamma_[c] = surface_shear_rate(g, normal + Dim * c);
       mu_[c] = viscosity(gamma_[c]);
     }
-    // (103): clear the previous support, then spread (serial: supports overlap).
-    std::swap(previous_, touched_);
-    for (std::size_t node : previous_) field_[node] = 0.0, flag_[node] = 0;
-    touched_.clear();
+    // (103), serial: the supports overlap.
     for (std::size_t c = 0; c < n; ++c) {
       const double m = mu_[c] * area[c];
-      for_each_support_node<Dim>(grid_, X + Dim * c, kernel_, [&](std::size_t node, double w) {
-        if (!flag_[node]) flag_[node] = 1, touched_.push_back(node);
-        field_[node] += w * m;
-      });
+      for_each_support_node<Dim>(grid_, X + Dim * c, kernel_, [&](std::size_t node, double w) { field_[node] += w * m; });
     }
   }
 
@@ -149,7 +156,8 @@ class PowerLawViscosity {
   PowerLawParameters p_;
   std::vector<double> gamma_, mu_;
   std::vector<double> field_;
-  std::vector<char> flag_;
+  std::vector<long> slot_;    // index into touched_ and grad_, -1 off the current support
+  std::vector<Tensor> grad_;  // centred-difference gradient at touched_[i]
   std::vector<std::size_t> touched_, previous_;
 };
 
