@@ -61,7 +61,8 @@ void check_column(const std::string& column, const std::vector<std::string>& fit
 }  // namespace
 
 const std::vector<std::string>& known_fits() {
-  static const std::vector<std::string> fits{"response", "recovery", "two_phase", "double_exponential"};
+  static const std::vector<std::string> fits{"response", "recovery", "two_phase", "double_exponential",
+                                             "double_exponential_free"};
   return fits;
 }
 
@@ -69,6 +70,7 @@ std::vector<std::string> times_of_fit(const std::string& fit) {
   if (fit == "response") return {"k_tau_s"};
   if (fit == "recovery") return {"k_tau_r"};
   if (fit == "two_phase" || fit == "double_exponential") return {"k_tau_R1", "k_tau_R2"};
+  if (fit == "double_exponential_free") return {"k_tau_R1", "k_tau_R2", "w_R1"};
   return {};
 }
 
@@ -85,7 +87,8 @@ AnalysisBlock parse_analysis_block(const nlohmann::json& block, const std::strin
       const auto& f = out.fits[i];
       if (std::find(known_fits().begin(), known_fits().end(), f) == known_fits().end())
         fail(where, "/fits/" + std::to_string(i),
-             "expected one of response, recovery, two_phase, double_exponential; got \"" + f + "\"");
+             "expected one of response, recovery, two_phase, double_exponential, double_exponential_free; got \"" +
+                 f + "\"");
       if (!seen.insert(f).second) fail(where, "/fits/" + std::to_string(i), "\"" + f + "\" listed twice");
     }
   }

@@ -33,6 +33,27 @@ struct TwoExponentials {
   }
 };
 
+struct WeightedExponentials {
+  double t, y, base, amplitude;
+  template <class T>
+  bool operator()(const T* p, T* r) const {
+    r[0] = T(base) + T(amplitude) * (p[2] * exp(-T(t) / p[0]) + (T(1.0) - p[2]) * exp(-T(t) / p[1])) - T(y);
+    return true;
+  }
+};
+
+// k_min_r_squared: a fit that explains less than half its data's variance is no fit.
+FitResult refuse_poor(FitResult fit) {
+  if (!fit.ok || fit.r_squared >= k_min_r_squared) return fit;
+  FitResult f = FitResult::failure(fit.model, "the model does not describe the data: R^2 = " + std::to_string(fit.r_squared) +
+                                                  " < " + std::to_string(k_min_r_squared));
+  f.r_squared = fit.r_squared;
+  f.n_points = fit.n_points;
+  f.t_begin = fit.t_begin;
+  f.t_end = fit.t_end;
+  return f;
+}
+
 // A time shorter than a fifth of the output spacing is not resolved: the model's first
 // sample after the start has then moved e^-5 = 99.3 % of the way, so the data carry
 // almost no information on it (and Ceres stops on a vanishing gradient, not at the truth).
@@ -115,7 +136,7 @@ FitResult one_exponential(const std::string& model, const std::string& name, con
   std::vector<OneExponential> points;
   for (std::size_t i = 0; i < w.t.size(); ++i) points.push_back({w.t[i], w.y[i], base, amplitude});
   detail::ParameterSpec<1> spec{{name}, {initial_tau(w, start, end)}, {k_tau_floor}, {detail::k_unbounded}};
-  return refuse_unresolved(detail::solve_least_squares<1>(model, points, w.y, spec, t_begin, t_end), w.t);
+  return refuse_poor(refuse_unresolved(detail::solve_least_squares<1>(model, points, w.y, spec, t_begin, t_end), w.t));
 }
 
 }  // namespace
@@ -174,7 +195,7 @@ FitResult fit_double_exponential(const std::vector<double>& kt, const std::vecto
                                 {tau0 / 3.0, tau0 * 3.0},
                                 {k_tau_floor, k_tau_floor},
                                 {detail::k_unbounded, detail::k_unbounded}};
-  FitResult fit = refuse_unresolved(detail::solve_least_squares<2>(model, points, w.y, spec, t_stop, t_end), w.t);
+  FitResult fit = refuse_poor(refuse_unresolved(detail::solve_least_squares<2>(model, points, w.y, spec, t_stop, t_end), w.t));
   if (fit.ok && fit.parameters[0].value > fit.parameters[1].value) {
     // The model is symmetric in the two times: report the shorter one as R1.
     std::swap(fit.parameters[0].value, fit.parameters[1].value);
@@ -184,6 +205,47 @@ FitResult fit_double_exponential(const std::vector<double>& kt, const std::vecto
     std::swap(fit.covariance[0][0], fit.covariance[1][1]);
   }
   fit.fixed = {{"form", "double_exponential"}, {"D_stop", D_stop}, {"D_inf", D_inf}, {"t0", t_stop}};
+  return fit;
+}
+
+FitResult fit_double_exponential_free(const std::vector<double>& kt, const std::vector<double>& D, double D_stop,
+                                      double D_inf, double t_stop, double t_end) {
+  const std::string model = "double exponential, free amplitudes";
+  const Window w =
+      select(kt, D, t_stop, t_end, t_stop, {{"D_stop", D_stop}, {"D_inf", D_inf}, {"t_stop", t_stop}, {"t_end", t_end}});
+  if (!w.reason.empty()) return FitResult::failure(model, w.reason);
+  if (w.t.size() < k_min_fit_points + 1) return FitResult::failure(model, "too few points for three parameters");
+  const double amplitude = D_stop - D_inf;
+  if (!(std::abs(amplitude) > 0.0)) return FitResult::failure(model, "zero amplitude: D_stop = D_inf");
+  std::vector<WeightedExponentials> points;
+  for (std::size_t i = 0; i < w.t.size(); ++i) points.push_back({w.t[i], w.y[i], D_inf, amplitude});
+  // Times a decade apart around the single-exponential guess, as for (90); the fast phase's
+  // share starts at 1/2. w is bounded to [0, 1]; on a bound the data show one phase only.
+  const double tau0 = initial_tau(w, D_stop, D_inf);
+  detail::ParameterSpec<3> spec{{"k_tau_R1", "k_tau_R2", "w_R1"},
+                                {tau0 / 3.0, tau0 * 3.0, 0.5},
+                                {k_tau_floor, k_tau_floor, 0.0},
+                                {detail::k_unbounded, detail::k_unbounded, 1.0}};
+  FitResult fit = refuse_poor(refuse_unresolved(detail::solve_least_squares<3>(model, points, w.y, spec, t_stop, t_end), w.t));
+  if (fit.ok && fit.parameters[0].value > fit.parameters[1].value) {
+    // (tau1, tau2, w) and (tau2, tau1, 1 - w) are the same curve: report the shorter time as R1.
+    std::swap(fit.parameters[0].value, fit.parameters[1].value);
+    std::swap(fit.parameters[0].std_error, fit.parameters[1].std_error);
+    std::swap(fit.parameters[0].ci_low, fit.parameters[1].ci_low);
+    std::swap(fit.parameters[0].ci_high, fit.parameters[1].ci_high);
+    auto& wp = fit.parameters[2];
+    wp.value = 1.0 - wp.value;
+    const double lo = 1.0 - wp.ci_high, hi = 1.0 - wp.ci_low;
+    wp.ci_low = lo;
+    wp.ci_high = hi;
+    // Permute the covariance: swap indices 0 and 1, and negate the w row/column.
+    auto c = fit.covariance;
+    const int perm[3] = {1, 0, 2};
+    const double sign[3] = {1.0, 1.0, -1.0};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) fit.covariance[i][j] = sign[i] * sign[j] * c[perm[i]][perm[j]];
+  }
+  fit.fixed = {{"form", "double_exponential_free"}, {"D_stop", D_stop}, {"D_inf", D_inf}, {"t0", t_stop}};
   return fit;
 }
 
@@ -200,6 +262,11 @@ double evaluate_fit(const FitResult& fit, double kt) {
   if (form == "double_exponential")
     return get("D_inf") + 0.5 * (get("D_stop") - get("D_inf")) *
                               (std::exp(-t / tau) + std::exp(-t / fit.parameters.at(1).value));
+  if (form == "double_exponential_free") {
+    const double w1 = fit.parameters.at(2).value;
+    return get("D_inf") + (get("D_stop") - get("D_inf")) *
+                              (w1 * std::exp(-t / tau) + (1.0 - w1) * std::exp(-t / fit.parameters.at(1).value));
+  }
   return std::nan("");
 }
 

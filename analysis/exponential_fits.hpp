@@ -20,6 +20,12 @@ inline constexpr std::size_t k_min_fit_points = 5;
 // below any output interval, so a fit that reaches it is reported as undetermined.
 inline constexpr double k_tau_floor = 1e-9;
 
+// A fit whose model explains less than half of the variance of its data (R^2 < 0.5) does
+// not describe them: it is reported as a failure naming its R^2, never as a number. The
+// text's poorest accepted fits are R^2 ~ 0.91-0.92 (Sec. 3.1, 5.1.1); a response (85)
+// fitted to a biconcave capsule, which starts at D = 0.812 rather than 0, gave R^2 = -80.
+inline constexpr double k_min_r_squared = 0.5;
+
 // (85) D = D_max (1 - exp(-t / k tau_s)) on [0, t_max]; t = kt.
 FitResult fit_response(const std::vector<double>& kt, const std::vector<double>& D, double D_max, double t_max);
 
@@ -39,6 +45,13 @@ FitResult fit_two_phase_late(const std::vector<double>& kt, const std::vector<do
 // [t_stop, t_end], t = kt - t_stop; reported with k tau_R1 <= k tau_R2.
 FitResult fit_double_exponential(const std::vector<double>& kt, const std::vector<double>& D, double D_stop,
                                  double D_inf, double t_stop, double t_end);
+
+// (90) with free amplitudes: D = D_inf + (D_stop - D_inf)(w exp(-t / k tau_R1) +
+// (1 - w) exp(-t / k tau_R2)) on [t_stop, t_end], w in (0, 1) fitted (parameter "w_R1"),
+// k tau_R1 <= k tau_R2. (90) fixes w = 1/2; a recovery whose fast phase carries a quarter
+// of the change (Fig. 38's capsule, issue 12) needs w free.
+FitResult fit_double_exponential_free(const std::vector<double>& kt, const std::vector<double>& D, double D_stop,
+                                      double D_inf, double t_stop, double t_end);
 
 // Evaluate a successful fit's curve at the member's time kt (for figures and tests).
 double evaluate_fit(const FitResult& fit, double kt);

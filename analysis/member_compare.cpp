@@ -18,7 +18,8 @@ constexpr double k_nan = std::numeric_limits<double>::quiet_NaN();
 // The fitted times, in the order of the README's fit table.
 constexpr const char* k_times[] = {"response.k_tau_s",   "recovery.k_tau_r",
                                    "two_phase.k_tau_R1", "two_phase.k_tau_R2",
-                                   "double_exponential.k_tau_R1", "double_exponential.k_tau_R2"};
+                                   "double_exponential.k_tau_R1", "double_exponential.k_tau_R2",
+                                   "double_exponential_free.k_tau_R1", "double_exponential_free.k_tau_R2"};
 
 // The key of MemberFits that holds a time ("two_phase.k_tau_R2" -> "two_phase_R2").
 std::string fit_key(const std::string& time) {

@@ -18,6 +18,7 @@ const char* model_of(const std::string& key) {
   if (key == "two_phase_R1") return "two-phase recovery, initial (87)";
   if (key == "two_phase_R2") return "two-phase recovery, late (88)";
   if (key == "double_exponential") return "double exponential (90)";
+  if (key == "double_exponential_free") return "double exponential, free amplitudes";
   return "unknown";
 }
 }  // namespace
@@ -58,6 +59,8 @@ MemberFits fit_member(const io::MemberData& member, const std::vector<std::strin
     }
     if (f == "double_exponential")
       out[f] = fit_double_exponential(kt, D, marker("D_stop"), marker("D_inf"), marker("t_stop"), t_end);
+    if (f == "double_exponential_free")
+      out[f] = fit_double_exponential_free(kt, D, marker("D_stop"), marker("D_inf"), marker("t_stop"), t_end);
   }
   return out;
 }

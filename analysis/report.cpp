@@ -128,7 +128,8 @@ std::vector<const MemberAnalysis*> ordered(const std::vector<MemberAnalysis>& me
 std::vector<std::string> fit_keys(const MemberFits& fits) {
   // A fixed, readable order.
   std::vector<std::string> keys;
-  for (const char* k : {"response", "recovery", "two_phase_R1", "two_phase_R2", "double_exponential"})
+  for (const char* k : {"response", "recovery", "two_phase_R1", "two_phase_R2", "double_exponential",
+                        "double_exponential_free"})
     if (fits.count(k)) keys.push_back(k);
   return keys;
 }

@@ -28,7 +28,9 @@ inline void record_units(io::MemberWriter& out, const Scene& scene, const Units&
   out.set_attribute("shear_rate", u.shear_rate);
   out.set_attribute("E_s", u.E_s);
   out.set_attribute("E_B", u.E_B);
-  out.set_attribute("E_B_convention", std::string("E_B = E_b a^2 E_s (README Conventions)"));
+  out.set_attribute("E_B_convention", scene.dim == 2 && scene.E_b_2d == "dissertation"
+                                          ? std::string("E_B = 2 E_b a^2 E_s: the dissertation's 2D E_b = E_B/(a E_s) with a = 0.5 (README Conventions)")
+                                          : std::string("E_B = E_b a^2 E_s (README Conventions)"));
   out.set_attribute("mu_s", u.mu_s);
   out.set_attribute("steps_per_kt", u.steps_per_kt);
   const auto n = scene.grid();

@@ -112,10 +112,15 @@ void Protocol::observe(double kt, double D, double theta, double beta) {
     if (recover_.until == "time") {
       end = since >= recover_.kt - time_slack;
       if (end) note_ += "; recovered for " + num(recover_.kt) + " kt";
-    } else if (steady(recover_.window_kt, recover_.tolerance, t_stop_)) {
-      end = true;
-      note_ += "; recovery ended when D_xy settled (range < " + num(recover_.tolerance) + " over " +
-               num(recover_.window_kt) + " kt)";
+    } else {
+      // The window grows with the recovery (PhaseSpec::window_fraction): "settled" means no
+      // change over a time long against the phase's own time scale, not a stationary point.
+      const double window = std::max(recover_.window_kt, recover_.window_fraction * since);
+      if (steady(window, recover_.tolerance, t_stop_)) {
+        end = true;
+        note_ += "; recovery ended when D_xy settled (range < " + num(recover_.tolerance) + " over the last " +
+                 num(window) + " kt)";
+      }
     }
     if (!end && recover_.until != "time" && since >= recover_.max_kt - time_slack) {
       end = true;

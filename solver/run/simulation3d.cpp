@@ -98,6 +98,7 @@ class Simulation3D {
   const Units& units() const { return units_; }
   double E_B() const { return E_B_; }
   double shear_modulus() const { return shear_modulus_; }
+  double tau_m() const { return tau_m_; }
   double K_v() const { return K_v_; }
   const m3::Mesh& mesh() const { return mesh_; }
   long steps() const { return steps_; }
@@ -216,7 +217,12 @@ class Simulation3D {
       // SLS (63)-(67): E_m = G E_s, tau_m = mu_s / E_m (DESIGN 3.4), mu_s = eta a mu_a (36).
       if (!(s.G > 0)) throw std::invalid_argument("eta > 0 needs G = E_m/E_s > 0");
       const double E_m = s.G * shear_modulus_;  // G = E_m / E_s, in the same convention
-      p.maxwell = m3::MaxwellElement{E_m, units_.mu_s / E_m, 1.0};
+      // The Kelvin-Voigt limit has surface viscosity E_m tau_m = mu_s ("physical"). The text's
+      // (63) read literally has a Maxwell modulus g_1(0)/2 = E_m/3 and tau_m = mu_s / E_m with
+      // E_m = G E_s = 3 G (E_s/3): its limit is mu_s/3 ("dissertation", Scene::sls_viscosity).
+      const double mu_limit = s.sls_viscosity == "dissertation" ? units_.mu_s / 3.0 : units_.mu_s;
+      p.maxwell = m3::MaxwellElement{E_m, mu_limit / E_m, 1.0};
+      tau_m_ = mu_limit / E_m;
     }
     E_B_ = s.E_b * a * a * units_.E_s;
     p.E_B = E_B_;
@@ -291,7 +297,7 @@ class Simulation3D {
   std::vector<double> U_;
   std::vector<double> spread_from_;  // node positions of the last spreading
   m3::PhaseTracker phase_;
-  double E_B_ = 0, K_v_ = 0, area0_ = 0, shear_modulus_ = 0;
+  double E_B_ = 0, K_v_ = 0, area0_ = 0, shear_modulus_ = 0, tau_m_ = 0;
   // IB delta (scene resolution.kernel, solver/ib/delta.hpp). Default Peskin's 4-point kernel, as
   // in 2D: the cosine kernel (18) has no zero first moment, so it interpolates a linear shear
   // with a lattice-locked error (README "The 2D capsule").
@@ -329,6 +335,10 @@ std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, bool qui
   out.set_attribute("G", scene.G);
   out.set_attribute("reference_case", scene.reference_case);
   out.set_attribute("viscoelastic", scene.eta > 0 ? std::string("standard linear solid (63)-(67), tau_m = mu_s/E_m") : std::string("none"));
+  out.set_attribute("sls_viscosity", scene.sls_viscosity == "dissertation"
+                                         ? std::string("dissertation: (63) read literally, Kelvin-Voigt limit mu_s/3 = eta a mu_a/3")
+                                         : std::string("physical: Kelvin-Voigt limit mu_s = eta a mu_a"));
+  if (scene.eta > 0) out.set_attribute("tau_m", sim.tau_m());
   out.set_attribute("delta", scene.kernel == "peskin4"
                                  ? std::string("peskin4: Peskin 4-point (zero first moment), not the cosine (18): README")
                                  : scene.kernel);

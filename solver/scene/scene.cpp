@@ -154,7 +154,11 @@ PhaseSpec read_phase(const json& j, const std::string& source, const std::string
     p.oscillatory_period_kt = r.number("oscillatory_period_kt", 0.0, 0.0, 1e4);
     r.refuse_unknown({"until", "kt", "value", "tolerance", "window_kt", "max_kt", "oscillatory_period_kt"});
   } else {
-    r.refuse_unknown({"until", "kt", "value", "tolerance", "window_kt", "max_kt"});
+    // A turning point of a slow recovery (a tank-treading biconcave capsule's D_xy falls for
+    // ~15 kt, then rises for ~75 kt, Fig. 30) is stationary over any fixed short window; a
+    // window that grows with the time since the stop is not fooled by it.
+    p.window_fraction = p.until == "settled" ? r.number("window_fraction", 0.5, 0.0, 1.0) : r.number("window_fraction", 0.0, 0.0, 0.0);
+    r.refuse_unknown({"until", "kt", "value", "tolerance", "window_kt", "window_fraction", "max_kt"});
   }
   return p;
 }
@@ -200,6 +204,17 @@ Scene Scene::from_json(const json& j, const std::string& source) {
     p.refuse_unknown({"K", "n"});
   }
   {
+    json conv = r.object("conventions", false);
+    ObjectReader c(conv, source, r.child_path("conventions"));
+    s.sls_viscosity = c.choice("sls_viscosity", std::string("physical"), {"physical", "dissertation"});
+    s.E_b_2d = c.choice("E_b_2d", std::string("dimensionless"), {"dimensionless", "dissertation"});
+    if (s.dim == 2 && s.sls_viscosity != "physical")
+      c.fail("sls_viscosity", "the standard linear solid is the 3D membrane's", "\"physical\" in 2D");
+    if (s.dim == 3 && s.E_b_2d != "dimensionless")
+      c.fail("E_b_2d", "the 2D bending convention does not apply to a 3D scene", "\"dimensionless\" in 3D");
+    c.refuse_unknown({"sls_viscosity", "E_b_2d"});
+  }
+  {
     json res = r.object("resolution", false);
     ObjectReader q(res, source, r.child_path("resolution"));
     s.a = q.number("a", 10.0, 2.0, 200.0);
@@ -237,8 +252,8 @@ Scene Scene::from_json(const json& j, const std::string& source) {
     o.refuse_unknown({"interval_kt", "shapes_at_kt", "snapshots"});
   }
   r.refuse_unknown({"dim", "shape", "law", "C", "Re", "Ca", "E_b", "V", "eta", "G", "c0",
-                    "reference_case", "volume_penalty", "power_law", "resolution", "protocol",
-                    "output"});
+                    "reference_case", "volume_penalty", "power_law", "conventions", "resolution",
+                    "protocol", "output"});
   return s;
 }
 
@@ -259,6 +274,7 @@ json phase_json(const PhaseSpec& p, bool shear) {
   json j = {{"until", p.until}, {"kt", p.kt}, {"value", p.value}, {"tolerance", p.tolerance},
             {"window_kt", p.window_kt}, {"max_kt", p.max_kt}};
   if (shear) j["oscillatory_period_kt"] = p.oscillatory_period_kt;
+  else j["window_fraction"] = p.window_fraction;
   return j;
 }
 }  // namespace
@@ -279,6 +295,7 @@ json Scene::to_json() const {
   j["reference_case"] = reference_case;
   j["volume_penalty"] = volume_penalty;
   j["power_law"] = {{"K", power_law_K}, {"n", power_law_n}};
+  j["conventions"] = {{"sls_viscosity", sls_viscosity}, {"E_b_2d", E_b_2d}};
   j["resolution"] = {{"a", a}, {"domain", domain}, {"segments", segments},
                      {"mesh_level", mesh_level}, {"tau", tau}, {"kernel", kernel}};
   j["protocol"] = {{"shear", phase_json(shear, true)}, {"recover", phase_json(recover, false)}};

@@ -24,7 +24,8 @@ namespace {
 double choose_tau_2d(const Scene& scene) {
   constexpr double nu_default = 1.0 / 6.0, S_max = 0.04, B_max = 0.12, tau_min = 0.52;
   double nu = std::min(nu_default, S_max * scene.a * scene.Ca / scene.Re);
-  if (scene.E_b > 0) nu = std::min(nu, B_max * scene.Ca / (scene.E_b * scene.a * scene.Re));
+  const double E_b = dimensionless_E_b(scene);
+  if (E_b > 0) nu = std::min(nu, B_max * scene.Ca / (E_b * scene.a * scene.Re));
   return std::max(tau_min, 0.5 + 3.0 * nu);
 }
 
@@ -34,6 +35,13 @@ double choose_tau_2d(const Scene& scene) {
 // 3 % of the reference (solver/membrane3d/README.md).
 double choose_tau_3d(const Scene&) { return 1.0; }
 }  // namespace
+
+double dimensionless_E_b(const Scene& s) {
+  // The text's 2D reading (Scene::E_b_2d): E_B = E_b a_text E_s with a_text = 0.5 in its units
+  // of h = 0.05 (Sec. 2.4), so E_B / (a^2 E_s) = E_b / a_text = 2 E_b.
+  if (s.dim == 2 && s.E_b_2d == "dissertation") return 2.0 * s.E_b;
+  return s.E_b;
+}
 
 double choose_tau(const Scene& scene) {
   if (scene.tau > 0) return scene.tau;
@@ -50,7 +58,7 @@ Units units_for(const Scene& s, double tau) {
   // (35) prints E_b = E_B / (a E_s), which is not dimensionless (E_B is an energy, E_s an
   // energy per area) and would make the physics depend on the resolution a. Sui et al.
   // (2008), whom Sec. 2.4.2 validates against with the same E_b values, use E_B / (a^2 E_s).
-  u.E_B = s.E_b * s.a * s.a * u.E_s;
+  u.E_B = dimensionless_E_b(s) * s.a * s.a * u.E_s;
   u.mu_s = s.eta * s.a * u.nu;               // (36)
   u.nu_inside = s.V * u.nu;
   u.steps_per_kt = 1.0 / u.shear_rate;

@@ -15,6 +15,10 @@ struct Units {
   double steps_per_kt = 0; // 1 / k
 };
 
+// E_B / (a^2 E_s) of the scene: its E_b, or 2 E_b for a 2D scene in the dissertation's
+// convention (Scene::E_b_2d).
+double dimensionless_E_b(const Scene& scene);
+
 // tau must be > 1/2; throws std::invalid_argument otherwise.
 Units units_for(const Scene& scene, double tau);
 

@@ -4,5 +4,7 @@
 namespace capsule {
 // 2: MRT energy and energy-square rates follow s_nu (stability at large tau).
 // 3: 2D Kelvin-Voigt membrane viscosity implicit in the node velocities.
-inline constexpr const char* physics_version = "3";
+// 4: "settled" recovery window grows with the time since the stop (window_fraction); scene
+//    conventions (sls_viscosity, E_b_2d).
+inline constexpr const char* physics_version = "4";
 }  // namespace capsule

@@ -68,6 +68,15 @@ TEST_CASE("Degenerate series give a reason, not a number", "[analysis]") {
     for (double t : kt) D.push_back(0.5 + 0.01 * std::sin(t));
     check_failed(fit_double_exponential(kt, D, 0.5, 0.5, 0.0, 10.0), "zero amplitude");
   }
+  SECTION("a model that does not describe its data is refused with its R^2") {
+    // A biconcave capsule starts at D = 0.812, dips and comes back: (85), which starts at
+    // D = 0, cannot describe it (issue 12 saw R^2 = -80 printed as a number).
+    std::vector<double> D;
+    for (double t : kt) D.push_back(0.812 - 0.3 * std::sin(3.14159265358979 * t / 10.0) + 0.001 * t);
+    const FitResult f = fit_response(kt, D, D.back(), 10.0);
+    check_failed(f, "does not describe the data: R^2 = ");
+    CHECK(f.r_squared < 0.0);
+  }
   SECTION("an instant drop: k tau below the output spacing is refused") {
     // D = D_stop at t_stop and 0 right after: (86) is best matched by k tau -> 0, which
     // the data cannot resolve, so the fit is refused instead of reporting 1e-9.

@@ -100,6 +100,20 @@ std::vector<Case> cases() {
                  return fit_double_exponential(s.kt, s.D, D_stop, D_inf, t_stop, t_end);
                },
                {0.2, 2.0}});
+  // Fig. 38's shape of recovery (issue 12): a fast phase carrying a quarter of the change,
+  // then a slow one; (90)'s equal halves cannot describe it, free amplitudes can.
+  c.push_back({"double exponential, free amplitudes",
+               [](unsigned seed) {
+                 const double D_stop = 0.443, D_inf = 0.795, t1 = 0.3, t2 = 6.0, w = 0.25, t_stop = 20.0, t_end = 50.0;
+                 const auto s = make(t_stop, t_end, 0.05,
+                                     [&](double t) {
+                                       const double u = t - t_stop;
+                                       return D_inf + (D_stop - D_inf) * (w * std::exp(-u / t1) + (1 - w) * std::exp(-u / t2));
+                                     },
+                                     0.002, seed);
+                 return fit_double_exponential_free(s.kt, s.D, D_stop, D_inf, t_stop, t_end);
+               },
+               {0.3, 6.0, 0.25}});
   return c;
 }
 

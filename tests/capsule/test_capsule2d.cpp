@@ -15,6 +15,7 @@
 #include "solver/membrane2d/measures.hpp"
 #include "solver/run/simulation2d.hpp"
 #include "solver/scene/scene.hpp"
+#include "solver/scene/units.hpp"
 
 using namespace capsule;
 namespace fs = std::filesystem;
@@ -128,6 +129,21 @@ TEST_CASE("bending stiffness gives a resolution-independent steady D", "[capsule
   INFO("D(a=5) = " << D5 << ", D(a=8) = " << D8);
   REQUIRE(D5 < 0.35);  // bending makes the capsule stiffer than E_b = 0 (D = 0.39)
   REQUIRE(std::abs(D8 - D5) < 0.01);  // measured steady D 0.2740 / 0.2748 / 0.2738 at a = 5 / 10 / 20
+}
+
+TEST_CASE("the dissertation's 2D E_b convention is twice the bending of the dimensionless one", "[capsule2d]") {
+  // (35) read in the text's 2D units (a = 0.5): E_B = E_b a E_s = 2 E_b a^2 E_s at a = 0.5, so
+  // E_b = 0.05 in the text's convention is E_b = 0.1 here: the same E_B, tau and steady D.
+  nlohmann::json text = circle_scene(5, 0.05, 0.05);
+  text["conventions"] = {{"E_b_2d", "dissertation"}};
+  const Scene s_text = scene_of(text);
+  const Scene s_double = scene_of(circle_scene(5, 0.05, 0.1));
+  CHECK(choose_tau(s_text) == choose_tau(s_double));  // the tau rule sees the bending it runs
+  const Units u_text = units_for(s_text, choose_tau(s_text)), u_double = units_for(s_double, choose_tau(s_double));
+  CHECK(u_text.E_B == Approx(u_double.E_B).epsilon(1e-14));
+  const double D_text = steady_D(s_text, 1.0), D_double = steady_D(s_double, 1.0);
+  CHECK(D_text == Approx(D_double).epsilon(1e-12));
+  CHECK(D_text < steady_D(scene_of(circle_scene(5, 0.05, 0.05)), 1.0));  // stiffer than E_b = 0.05 here
 }
 
 TEST_CASE("viscosity contrast: inside fluid carries V nu, and a viscous capsule deforms less", "[capsule2d]") {

@@ -32,6 +32,15 @@ TEST_CASE("a minimal scene gets the documented defaults", "[scene]") {
   j["resolution"] = {{"kernel", "roma3"}};
   CHECK(Scene::from_json(j, "t.json").kernel == "roma3");
   CHECK(t.grid() == std::vector<int>{100, 100, 80});
+  CHECK(s.sls_viscosity == "physical");
+  CHECK(s.E_b_2d == "dimensionless");
+  CHECK(s.to_json()["conventions"] == json{{"sls_viscosity", "physical"}, {"E_b_2d", "dimensionless"}});
+  json settled = minimal_2d();
+  settled["protocol"]["recover"] = {{"until", "settled"}};
+  CHECK(Scene::from_json(settled, "t.json").recover.window_fraction == 0.5);
+  json j3 = j;
+  j3["conventions"] = {{"E_b_2d", "dissertation"}};
+  CHECK_THROWS_WITH(Scene::from_json(j3, "t.json"), Catch::Contains("conventions.E_b_2d: the 2D bending convention"));
 }
 
 TEST_CASE("the canonical scene does not depend on spelling, and round-trips", "[scene]") {
@@ -70,6 +79,12 @@ TEST_CASE("bad scenes are refused with the file, the key and the allowed range",
        "resolution.kernel: unknown value \"gauss\" (allowed: peskin4 | roma3 | linear2 | cosine)"},
       {"3D-only kernel in 2D", [](json& j) { j["resolution"] = {{"kernel", "roma3"}}; },
        "resolution.kernel: kernel \"roma3\" is 3D only (allowed: \"peskin4\" in 2D)"},
+      {"SLS convention in 2D", [](json& j) { j["conventions"] = {{"sls_viscosity", "dissertation"}}; },
+       "conventions.sls_viscosity: the standard linear solid is the 3D membrane's (allowed: \"physical\" in 2D)"},
+      {"unknown convention", [](json& j) { j["conventions"] = {{"E_b_2d", "text"}}; },
+       "conventions.E_b_2d: unknown value \"text\" (allowed: dimensionless | dissertation)"},
+      {"window_fraction on a timed recovery", [](json& j) { j["protocol"]["recover"]["window_fraction"] = 0.5; },
+       "protocol.recover.window_fraction: value 0.5 out of range (allowed: [0, 0])"},
   };
   for (const auto& c : cases) {
     SECTION(c.what) {

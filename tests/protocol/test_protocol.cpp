@@ -49,7 +49,7 @@ TEST_CASE("shear until time, recover for a time: markers at the right rows", "[p
 
 TEST_CASE("steady and settled detection use the stated window and tolerance", "[protocol]") {
   Protocol p(scene_with({{"shear", {{"until", "steady"}, {"tolerance", 1e-3}, {"window_kt", 2}}},
-                         {"recover", {{"until", "settled"}, {"tolerance", 1e-3}, {"window_kt", 2}}}}));
+                         {"recover", {{"until", "settled"}, {"tolerance", 1e-3}, {"window_kt", 2}, {"window_fraction", 0}}}}));
   double stop_time = -1;
   drive(p, [&](double t, bool on) {
     if (on) return 0.2 * (1 - std::exp(-t));
@@ -62,6 +62,41 @@ TEST_CASE("steady and settled detection use the stated window and tolerance", "[
   CHECK(m["t_stop"] == Approx(7.2).margin(0.051));
   CHECK(m["t_end"] - m["t_stop"] == Approx(std::log(0.2 * (std::exp(2.0) - 1) / 1e-3)).margin(0.1));
   CHECK(m["D_inf"] < 2e-3);
+}
+
+TEST_CASE("settled is not fooled by the turning point of a slow, non-monotone recovery", "[protocol]") {
+  // A tank-treading biconcave capsule's D_xy falls for ~15 kt after the stop and then rises
+  // slowly back toward its undeformed 0.812 (Fig. 30; issue 12 measured 0.639 at the stop,
+  // 0.5445 at the minimum). Here D = 0.5445 + c (s - 15)^2, s = kt - t_stop, with c such that
+  // D(0) = 0.639: over any 2 kt window around s = 15 its range is below 1e-3.
+  const double c = (0.639 - 0.5445) / 225.0;
+  auto run = [&](double fraction) {
+    Protocol p(scene_with({{"shear", {{"until", "time"}, {"kt", 1}}},
+                           {"recover", {{"until", "settled"}, {"tolerance", 1e-3}, {"window_kt", 2},
+                                        {"window_fraction", fraction}, {"max_kt", 40}}}}));
+    drive(p, [&](double t, bool on) { return on ? 0.639 : 0.5445 + c * (t - 1.0 - 15.0) * (t - 1.0 - 15.0); });
+    return p;
+  };
+  // A fixed 2 kt window (the old rule) ends the recovery at the turning point: t_min = t_end,
+  // and the late phase (88) would have an empty interval.
+  Protocol fixed = run(0.0);
+  CHECK(fixed.markers()["t_end"] - 1.0 == Approx(16.0).margin(0.6));
+  // The default window (half the time since the stop) sees the fall and the rise, and the
+  // recovery runs on to its cap.
+  Protocol grown = run(0.5);
+  CHECK(grown.markers()["t_end"] - 1.0 == Approx(40.0).margin(1e-6));
+  CHECK_THAT(grown.phase_note(), Catch::Contains("max_kt = 40"));
+  CHECK(grown.markers()["t_min"] - 1.0 == Approx(15.0).margin(0.06));
+}
+
+TEST_CASE("settled with a growing window: an exponential recovery ends when the last half is flat", "[protocol]") {
+  // D = 0.2 e^-s: the range over [s/2, s] is 0.2 (e^-s/2 - e^-s) < 1e-3 first near s = 10.6.
+  Protocol p(scene_with({{"shear", {{"until", "time"}, {"kt", 1}}},
+                         {"recover", {{"until", "settled"}, {"tolerance", 1e-3}, {"window_kt", 2}}}}));
+  drive(p, [](double t, bool on) { return on ? 0.2 : 0.2 * std::exp(-(t - 1.0)); });
+  double s = 1;
+  while (0.2 * (std::exp(-s / 2) - std::exp(-s)) >= 1e-3) s += 1e-4;
+  CHECK(p.markers()["t_end"] - 1.0 == Approx(s).margin(0.1));  // two output rows of slack
 }
 
 TEST_CASE("two-phase recovery: t_min is the dip before the slow rise (Sec. 4.1.1)", "[protocol]") {
