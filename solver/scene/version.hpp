@@ -6,5 +6,6 @@ namespace capsule {
 // 3: 2D Kelvin-Voigt membrane viscosity implicit in the node velocities.
 // 4: "settled" recovery window grows with the time since the stop (window_fraction); scene
 //    conventions (sls_viscosity, E_b_2d).
-inline constexpr const char* physics_version = "4";
+// 5: 3D relaxation-time rule tau = 1.5 (was 1), bounded by the measured stable S and B.
+inline constexpr const char* physics_version = "5";
 }  // namespace capsule

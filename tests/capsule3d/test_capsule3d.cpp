@@ -238,6 +238,30 @@ TEST_CASE("a more viscous interior (V = 5) slows the response of a sphere", "[ca
   CHECK(std::abs(five.series.at("volume_drift").back()) < 0.01);
 }
 
+TEST_CASE("the automatic tau runs the default member through steady shear and recovery, and V = 5, eta = 10", "[capsule3d]") {
+  // CI-sized (a = 4, level 2) versions of the reference member (Ca = 0.05, E_b = 0.025, shear
+  // until steady, recover until settled) and of a V = 5 and an eta = 10 member, at the solver's
+  // own tau: 1.5 for V <= 1, 1 for V > 1 (README "The 3D capsule").
+  std::ostringstream ref;
+  ref << R"({"dim": 3, "shape": "sphere", "Ca": 0.05, "E_b": 0.025, "V": 1, "eta": 0,
+      "resolution": {"a": 4, "mesh_level": 2},
+      "protocol": {"shear": {"until": "steady", "max_kt": 8}, "recover": {"until": "settled", "max_kt": 12}},
+      "output": {"interval_kt": 0.05}})";
+  const io::MemberData d = run(ref.str(), "auto_tau_ref");
+  REQUIRE(d.status == "complete");
+  CHECK(d.attributes.at("tau").get<double>() == Approx(1.5));
+  const auto& D = d.series.at("D_xy");
+  CHECK(d.markers.at("D_stop") > 0.1);
+  CHECK(D.back() < 0.05 * d.markers.at("D_stop"));  // recovered
+  CHECK(std::abs(d.series.at("volume_drift").back()) < 0.01);
+  const io::MemberData v5 = run(sphere_scene(0.05, 4.0, 2, 1.0, 0.0, 0.05, 5.0), "auto_tau_v5");
+  REQUIRE(v5.status == "complete");
+  CHECK(v5.attributes.at("tau").get<double>() == Approx(1.0));
+  const io::MemberData eta = run(sphere_scene(0.05, 4.0, 2, 1.0, 10.0), "auto_tau_eta");
+  REQUIRE(eta.status == "complete");
+  CHECK(eta.attributes.at("tau").get<double>() == Approx(1.5));
+}
+
 TEST_CASE("validation: neo-Hookean sphere steady D_xy against Ramanujan-Pozrikidis at a = 10 and level 4", "[.validation][capsule3d]") {
   // Hidden (CTest does not run it): ~40 min per capillary number (one thread, a = 10).
   // Steady plateaus read from the reference curves (tests/data/reference/README.md).

@@ -105,3 +105,38 @@ TEST_CASE("lattice units follow (8), (34)-(36) and Re = k a^2 / nu", "[scene]") 
   CHECK(u.E_B / (s.a * s.a * u.E_s) == Approx(s.E_b));  // dimensionless form, README "Conventions"
   CHECK_THROWS(capsule::units_for(s, 0.5));
 }
+
+TEST_CASE("3D relaxation-time rule: tau = 1.5 where stable, lowered by the coupling bounds", "[scene]") {
+  auto sphere = [](double Ca, double E_b, double a) {
+    json j = json::parse(R"({"dim": 3, "shape": "sphere", "V": 1, "eta": 0,
+      "protocol": {"shear": {"until": "steady"}, "recover": {"until": "settled"}}})");
+    j["Ca"] = Ca;
+    j["E_b"] = E_b;
+    j["resolution"] = {{"a", a}};
+    return Scene::from_json(j, "t.json");
+  };
+  // The default 3D member (a = 10, Re = 0.05, Ca = 0.05, E_b = 0.025): at most 6000 steps per kt.
+  const Scene ref = sphere(0.05, 0.025, 10);
+  CHECK(capsule::choose_tau(ref) == Approx(1.5));
+  CHECK(capsule::units_for(ref, capsule::choose_tau(ref)).steps_per_kt == Approx(6000.0));
+  // Bending number B = E_b a Re nu / Ca capped at 0.17 (E_b = 0.1: the stable tau = 1 of Fig. 8).
+  const Scene stiff = sphere(0.05, 0.1, 10);
+  const double nu_stiff = (capsule::choose_tau(stiff) - 0.5) / 3.0;
+  CHECK(stiff.E_b * stiff.a * stiff.Re * nu_stiff / stiff.Ca == Approx(0.17));
+  // Elastic number S = Re nu / (a Ca) capped at 0.17 (small Ca).
+  const Scene soft = sphere(0.005, 0.0, 10);
+  const double nu_soft = (capsule::choose_tau(soft) - 0.5) / 3.0;
+  CHECK(soft.Re * nu_soft / (soft.a * soft.Ca) == Approx(0.17));
+  // A more viscous interior keeps tau = 1 (its error depends on the inside relaxation time).
+  json v5 = ref.to_json();
+  v5["V"] = 5.0;
+  CHECK(capsule::choose_tau(Scene::from_json(v5, "t.json")) == Approx(1.0));
+  json v02 = ref.to_json();
+  v02["V"] = 0.2;
+  CHECK(capsule::choose_tau(Scene::from_json(v02, "t.json")) == Approx(1.5));
+  // Never below 0.52, and a scene's own tau wins.
+  CHECK(capsule::choose_tau(sphere(0.0001, 0.0, 2)) == Approx(0.52));
+  json j = ref.to_json();
+  j["resolution"]["tau"] = 1.0;
+  CHECK(capsule::choose_tau(Scene::from_json(j, "t.json")) == 1.0);
+}
