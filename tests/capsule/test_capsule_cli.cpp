@@ -94,7 +94,7 @@ TEST_CASE("capsule check refuses a 2D power-law scene, as the run does", "[capsu
   fs::remove_all(dir);
 }
 
-TEST_CASE("capsule command-line errors exit 2; --help documents the exit status", "[capsule2d]") {
+TEST_CASE("capsule command-line errors exit 2, and --help documents the exit status", "[capsule2d]") {
   const fs::path dir = scratch();
   const std::string out = " -o " + quote((dir / "m.h5").string());
   for (const std::string& args : {scene + out + " --threads -1", scene + out + " --threads two", scene + out + " --frob",
