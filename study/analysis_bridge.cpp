@@ -2,6 +2,9 @@
 
 #include <stdexcept>
 
+#include "study/exit_status.hpp"
+#include "study/report_freshness.hpp"
+
 #if __has_include("analysis/report.hpp") && __has_include("analysis/compare.hpp")
 #include "analysis/compare.hpp"
 #include "analysis/report.hpp"
@@ -28,6 +31,12 @@ int report_campaign(const CampaignSurvey& survey, std::ostream& out) {
       ++missing;
       continue;  // never run, or failed without a file: nothing to analyse
     }
+    // The member's own file only: inspect_member checks its member_id (a file copied from
+    // another campaign, or made by older physics, is "failed", as in `study status`).
+    if (survey.conditions[i].state == MemberState::failed) {
+      out << "skipped " << m.dir_name() << ": " << survey.conditions[i].reason << "\n";
+      continue;
+    }
     // A member shared by several cases is analysed once per case.
     request.members.push_back(analysis::MemberRef{m.id, m.slug, p.h5.string(), m.case_name, m.scene});
     for (const auto& other : m.other_cases)
@@ -38,7 +47,7 @@ int report_campaign(const CampaignSurvey& survey, std::ostream& out) {
   const analysis::ReportSummary summary = analysis::write_report(request);
   for (const auto& f : summary.files) out << "wrote " << f << "\n";
   if (summary.figures_skipped) out << "figures skipped: " << summary.figures_note << "\n";
-  return 0;
+  return members_exit_code(survey);
 }
 
 int compare_campaign_files(const std::vector<std::string>& campaign_files, bool against_table2,
@@ -46,8 +55,10 @@ int compare_campaign_files(const std::vector<std::string>& campaign_files, bool 
   std::vector<analysis::CompareEntry> entries;
   std::string joined;
   for (const auto& file : campaign_files) {
-    const Campaign c = load_campaign(file);
-    entries.push_back({c.name, ResultsLayout(results_dir, c.name).report_dir().string()});
+    const CampaignSurvey survey = survey_campaign(file, results_dir);
+    if (const auto warning = stale_report_warning(survey)) out << *warning << "\n";
+    const Campaign& c = survey.campaign;
+    entries.push_back({c.name, survey.layout.report_dir().string()});
     joined += (joined.empty() ? "" : "_vs_") + c.name;
   }
   const fs::path out_dir = fs::absolute(results_dir) / "compare" / joined;

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "analysis/analysis_block.hpp"
+#include "solver/scene/json_text.hpp"
 #include "study/campaign_error.hpp"
 #include "study/json_path.hpp"
 
@@ -42,9 +43,14 @@ std::string read_string(const json& object, const std::string& key, bool require
 
 std::string read_safe_name(const json& object, const std::string& source, const std::string& path) {
   const std::string name = read_string(object, "name", true, source, path);
+  if (name.size() > max_name_length)
+    throw campaign_error(source, key_path(path, "name"),
+                         "a name of " + std::to_string(name.size()) + " characters is too long",
+                         "at most " + std::to_string(max_name_length) + " characters");
   if (!is_safe_name(name))
     throw campaign_error(source, key_path(path, "name"), "\"" + name + "\" is not a safe name",
-                         "letters, digits, '_', '-', '.', not starting with '.'");
+                         "letters, digits, '_', '-', '.', not starting with '.', at most " +
+                             std::to_string(max_name_length) + " characters");
   return name;
 }
 
@@ -117,7 +123,7 @@ std::size_t Sweep::count() const {
 }
 
 bool is_safe_name(const std::string& name) {
-  if (name.empty() || name.front() == '.') return false;
+  if (name.empty() || name.front() == '.' || name.size() > max_name_length) return false;
   for (char c : name) {
     const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
                     c == '-' || c == '.';
@@ -129,9 +135,9 @@ bool is_safe_name(const std::string& name) {
 Campaign parse_campaign(const std::string& text, const std::string& source) {
   json doc;
   try {
-    doc = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw campaign_error(source, "", std::string("not valid JSON: ") + e.what());
+    doc = parse_json_text(text, source);  // comments allowed, duplicate keys refused
+  } catch (const JsonTextError& e) {
+    throw CampaignError(e.what());
   }
   if (!doc.is_object())
     throw campaign_error(source, "", "the document is a " + std::string(doc.type_name()), "a JSON object");

@@ -33,7 +33,7 @@ struct CampaignCase {
 };
 
 struct Campaign {
-  std::string name;          // safe path component: [A-Za-z0-9_.-]+, not starting with '.'
+  std::string name;          // safe path component: [A-Za-z0-9_.-]+, not starting with '.', <= 100 chars
   std::string description;
   std::string source;        // the file it came from (for messages)
   std::string text;          // the file's text as read (recorded in results/<name>/campaign.json)
@@ -43,7 +43,12 @@ struct Campaign {
   nlohmann::json analysis;          // null when the file has no analysis block
 };
 
-// True for names usable as one path component: [A-Za-z0-9_.-]+ not starting with '.'.
+// Campaign and case names become folder names (results/<name>/, member slugs, and
+// compare/<a>_vs_<b>/), so they are kept well under NAME_MAX (255).
+inline constexpr std::size_t max_name_length = 100;
+
+// True for names usable as one path component: [A-Za-z0-9_.-]+ not starting with '.',
+// at most max_name_length characters.
 bool is_safe_name(const std::string& name);
 
 // Throws CampaignError naming the source, the JSON path and the problem.

@@ -11,42 +11,23 @@
 #include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <functional>
 #include <vector>
 
 #include "study/capsule_binary.hpp"
 #include "study/concurrency.hpp"
+#include "study/exit_status.hpp"
 #include "study/joblog.hpp"
 #include "study/member_wrapper.hpp"
+#include "study/run_lock.hpp"
 #include "study/run_record.hpp"
+#include "study/script_path.hpp"
 
 namespace capsule::study {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-// Holds an exclusive flock on results/<campaign>/.lock. The descriptor is inherited by
-// GNU Parallel and every member it starts, so the lock stays held while any member of
-// this run is alive, even if `study` itself is killed; a second `study run` of the
-// same campaign is refused until then.
-class CampaignLock {
- public:
-  explicit CampaignLock(const fs::path& path) {
-    fd_ = ::open(path.c_str(), O_RDWR | O_CREAT, 0644);
-    if (fd_ < 0) throw std::runtime_error("cannot open " + path.string() + ": " + std::strerror(errno));
-    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-      ::close(fd_);
-      throw std::runtime_error("another `study run` of this campaign (or members it started) is still running: " +
-                               path.string() + " is locked");
-    }
-  }
-  ~CampaignLock() { ::close(fd_); }
-  CampaignLock(const CampaignLock&) = delete;
-  CampaignLock& operator=(const CampaignLock&) = delete;
-
- private:
-  int fd_ = -1;
-};
 
 volatile sig_atomic_t child_pid = 0;
 
@@ -58,7 +39,7 @@ extern "C" void forward_sigterm(int) {
 
 // Runs argv (no shell) and waits. Ctrl-C reaches GNU Parallel through the terminal's
 // process group; study ignores it meanwhile so it can still print the summary.
-int run_and_wait(const std::vector<std::string>& argv) {
+int run_and_wait(const std::vector<std::string>& argv, const std::function<void(long)>& started) {
   std::vector<char*> args;
   for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
@@ -80,6 +61,7 @@ int run_and_wait(const std::vector<std::string>& argv) {
     ::_exit(127);
   }
   child_pid = pid;
+  started(static_cast<long>(pid));
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
@@ -104,30 +86,43 @@ void print_status(const CampaignSurvey& survey, std::ostream& out) {
     if (c.state == MemberState::complete || c.state == MemberState::fresh) continue;
     out << "  [" << state_name(c.state) << "] " << survey.members[i].dir_name() << ": " << c.reason << "\n";
   }
-  if (survey.count(MemberState::interrupted) + survey.count(MemberState::fresh) + survey.count(MemberState::failed) +
-          survey.count(MemberState::stopped) >
-      0)
+  if (survey.count(MemberState::interrupted) + survey.count(MemberState::fresh) + survey.count(MemberState::failed) > 0)
     out << "  (`study run` again runs what is not complete; complete members are kept)\n";
+  if (survey.count(MemberState::unstable) + survey.count(MemberState::stopped) > 0)
+    out << "  (unstable and stopped members are kept: `study run --rerun-unstable` / `--rerun-stopped` runs them again)\n";
 }
 
 RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
   CampaignSurvey survey = survey_campaign(request.campaign_file, request.results_dir);
   const fs::path capsule_binary = find_capsule_binary();
-  // The job list has one member directory per line.
-  if (survey.layout.root.string().find('\n') != std::string::npos)
-    throw std::runtime_error("the results folder's path contains a line break: " + survey.layout.root.string());
+  // The job list has one member directory per line; the wrapper names the capsule binary.
+  require_script_safe("the results folder", survey.layout.root);
+  require_script_safe("the capsule binary's path", capsule_binary);
   fs::create_directories(survey.layout.root);
-  CampaignLock lock(survey.layout.lock_file());
+  std::vector<std::string> running;  // under a held lock, the members with only a .partial run
+  for (std::size_t i = 0; i < survey.members.size(); ++i)
+    if (survey.conditions[i].state == MemberState::interrupted) running.push_back(survey.members[i].dir_name());
+  RunLock lock(survey.layout.lock_file(), survey.layout.running_info(), running);
   prepare_member_directories(survey);
 
   std::vector<std::size_t> to_run;
   bool any_3d = false;
   for (std::size_t i = 0; i < survey.members.size(); ++i) {
-    if (!needs_run(survey.conditions[i], request.rerun_unstable)) continue;
+    if (!needs_run(survey.conditions[i], request.rerun_unstable, request.rerun_stopped)) continue;
     to_run.push_back(i);
     any_3d = any_3d || survey.members[i].scene.at("dim").get<int>() == 3;
   }
 
+  // A run.json without "finished" is the record of a run that was killed: keep it.
+  if (fs::exists(survey.layout.run_json())) {
+    std::ifstream in(survey.layout.run_json());
+    const nlohmann::json last = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+    if (last.is_object() && !last.contains("finished")) {
+      nlohmann::json killed = last;
+      killed["ended"] = "killed: no summary was written";
+      append_run_history(survey.layout.run_history(), killed);
+    }
+  }
   nlohmann::json record = run_record_start(survey.campaign.name, request.campaign_file);
   record["capsule_binary"] = capsule_binary.string();
   record["members"] = survey.members.size();
@@ -153,8 +148,10 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
 
     // No --halt: a failed member never stops the others. -q quotes the command words
     // (wrapper path, member dir, threads), so no user string reaches a shell unquoted.
-    std::vector<std::string> argv{"parallel", "--will-cite", "--joblog", survey.layout.joblog().string(),
-                                  "--jobs", std::to_string(conc.jobs)};
+    // "+joblog" appends: the joblog keeps every run's rows.
+    std::string joblog = "+";  // append(): GCC 12 -O3 reports a false -Wrestrict on "literal" + string
+    joblog.append(survey.layout.joblog().string());
+    std::vector<std::string> argv{"parallel", "--will-cite", "--joblog", joblog, "--jobs", std::to_string(conc.jobs)};
     if (request.progress_bar) argv.push_back("--bar");
     if (!request.hosts_file.empty()) {
       argv.insert(argv.end(), {"--sshloginfile", fs::absolute(request.hosts_file).string()});
@@ -167,11 +164,14 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
         << " at once" << (request.hosts_file.empty() ? "" : " per host") << " x " << conc.threads << " thread"
         << (conc.threads > 1 ? "s" : "") << ")\n"
         << std::flush;
+    const double start_epoch =
+        std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
     const auto start = std::chrono::steady_clock::now();
-    const int parallel_status = run_and_wait(argv);
+    const int parallel_status = run_and_wait(argv, [&lock](long pid) { lock.record(pid); });
     outcome.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     outcome.ran = to_run.size();
-    for (const auto& e : read_joblog(survey.layout.joblog())) outcome.member_seconds += e.runtime;
+    for (const auto& e : read_joblog(survey.layout.joblog()))
+      if (e.start >= start_epoch - 1.0) outcome.member_seconds += e.runtime;  // this run's rows only
     record["parallel_exit_status"] = parallel_status;
   } else {
     out << "nothing to run: every member is finished\n";
@@ -185,7 +185,7 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
     out << "wall " << outcome.wall_seconds << " s for " << outcome.member_seconds
         << " s of member run time (concurrency " << (outcome.wall_seconds > 0 ? outcome.member_seconds / outcome.wall_seconds : 0)
         << ")\n";
-  outcome.exit_code = survey.count(MemberState::complete) == survey.members.size() ? 0 : 1;
+  outcome.exit_code = members_exit_code(survey);
 
   record["finished"] = utc_now_iso8601();
   record["wall_seconds"] = outcome.wall_seconds;
@@ -195,7 +195,9 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
                      MemberState::stopped, MemberState::failed})
     counts[state_name(state)] = survey.count(state);
   record["counts"] = counts;
+  record["exit_status"] = outcome.exit_code;
   write_file_atomically(survey.layout.run_json(), record.dump(2) + "\n");
+  append_run_history(survey.layout.run_history(), record);
   return outcome;
 }
 

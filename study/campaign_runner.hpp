@@ -19,11 +19,12 @@ struct RunRequest {
   std::string hosts_file;        // GNU Parallel --sshloginfile (shared filesystem assumed)
   std::string ssh_command;       // GNU Parallel --ssh (default: ssh)
   bool rerun_unstable = false;   // also rerun members whose file says unstable
+  bool rerun_stopped = false;    // also rerun members whose file says stopped (a configuration the solver refused)
   bool progress_bar = false;     // --bar (the app sets it when stdout is a terminal)
 };
 
 struct RunOutcome {
-  int exit_code = 0;            // 0 when every member is complete, 1 otherwise
+  int exit_code = 0;            // members_exit_code (exit_status.hpp): 0 when every member is complete
   std::size_t ran = 0;          // members handed to GNU Parallel
   double wall_seconds = 0;      // GNU Parallel's wall time
   double member_seconds = 0;    // sum of the joblog's JobRuntime over the members run

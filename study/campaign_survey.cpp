@@ -3,6 +3,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "study/campaign_owner.hpp"
+
 namespace capsule::study {
 
 namespace fs = std::filesystem;
@@ -15,8 +17,9 @@ std::size_t CampaignSurvey::count(MemberState state) const {
 
 CampaignSurvey survey_campaign(const std::string& campaign_file, const fs::path& results_dir) {
   Campaign campaign = load_campaign(campaign_file);
-  std::vector<Member> members = expand_campaign(campaign);
   ResultsLayout layout(results_dir, campaign.name);
+  require_same_campaign(campaign, layout);
+  std::vector<Member> members = expand_campaign(campaign);
   std::vector<MemberCondition> conditions;
   conditions.reserve(members.size());
   for (const auto& m : members) conditions.push_back(inspect_member(layout.member(m), m.id));
@@ -34,7 +37,7 @@ std::string read_text(const fs::path& path) {
 
 void prepare_member_directories(const CampaignSurvey& survey) {
   fs::create_directories(survey.layout.members_dir());
-  write_file_atomically(survey.layout.campaign_json(), survey.campaign.text);
+  record_campaign(survey.campaign, survey.layout);
   for (const auto& m : survey.members) {
     const MemberPaths p = survey.layout.member(m);
     fs::create_directories(p.dir);

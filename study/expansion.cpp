@@ -1,7 +1,8 @@
 #include "study/expansion.hpp"
 
 #include <algorithm>
-#include <map>
+#include <cstdint>
+#include <unordered_map>
 
 #include "solver/scene/scene.hpp"
 #include "solver/scene/version.hpp"
@@ -16,28 +17,20 @@ namespace {
 using nlohmann::json;
 using Assignment = std::vector<std::pair<std::string, json>>;
 
-// Every point of a sweep, as key -> value assignments, grid varying fastest in its last key.
-std::vector<Assignment> sweep_points(const Sweep& sweep) {
-  std::vector<Assignment> points{Assignment{}};
-  if (!sweep.zip.empty()) {
-    points.clear();
-    for (std::size_t row = 0; row < sweep.zip.front().values.size(); ++row) {
-      Assignment a;
-      for (const auto& axis : sweep.zip) a.emplace_back(axis.key, axis.values[row]);
-      points.push_back(std::move(a));
-    }
+// Point i of a sweep (0 <= i < sweep.count()), as key -> value assignments: zip rows
+// outermost, then the grid axes in order, the last grid axis varying fastest. Computed
+// from the index, so no list of points is ever held.
+Assignment sweep_point(const Sweep& sweep, std::size_t i) {
+  std::vector<std::size_t> grid_index(sweep.grid.size());
+  for (std::size_t k = sweep.grid.size(); k-- > 0;) {
+    const std::size_t n = sweep.grid[k].values.size();
+    grid_index[k] = i % n;
+    i /= n;
   }
-  for (const auto& axis : sweep.grid) {
-    std::vector<Assignment> next;
-    for (const auto& p : points)
-      for (const auto& v : axis.values) {
-        Assignment a = p;
-        a.emplace_back(axis.key, v);
-        next.push_back(std::move(a));
-      }
-    points = std::move(next);
-  }
-  return points;
+  Assignment a;
+  for (const auto& axis : sweep.zip) a.emplace_back(axis.key, axis.values[i]);
+  for (std::size_t k = 0; k < sweep.grid.size(); ++k) a.emplace_back(sweep.grid[k].key, sweep.grid[k].values[grid_index[k]]);
+  return a;
 }
 
 // The leaf key paths a case's "set" writes: {"resolution": {"a": 5}} -> "resolution.a".
@@ -99,13 +92,21 @@ std::string member_slug(const std::string& case_name, const Assignment& paramete
   return slug;
 }
 
-std::vector<Member> expand_campaign(const Campaign& campaign) {
+void for_each_member(const Campaign& campaign, const std::function<void(Member&&)>& visit,
+                     const std::function<void(std::size_t, const std::string&)>& also_case) {
   std::vector<CampaignCase> cases = campaign.cases;
   if (cases.empty()) cases.push_back(CampaignCase{});
 
-  std::vector<Member> members;
-  std::map<std::string, std::pair<std::size_t, std::string>> index_by_id;  // id -> (member, description)
-  for (const auto& cc : cases) {
+  // The duplicate check keeps 16 bytes per member: id hash -> (member index, case, point).
+  struct Seen {
+    std::size_t member;
+    std::uint32_t case_index;
+    std::size_t point;
+  };
+  std::unordered_map<std::uint64_t, Seen> seen;
+  std::size_t next_index = 0;
+  for (std::size_t ci = 0; ci < cases.size(); ++ci) {
+    const CampaignCase& cc = cases[ci];
     const Sweep& sweep = cc.sweep ? *cc.sweep : campaign.sweep;
     refuse_set_and_swept(campaign, cc, sweep);
     json case_scene = campaign.base;
@@ -114,7 +115,9 @@ std::vector<Member> expand_campaign(const Campaign& campaign) {
     } catch (const std::invalid_argument& e) {
       throw campaign_error(campaign.source, "cases", "case \"" + cc.name + "\": " + e.what());
     }
-    for (const auto& point : sweep_points(sweep)) {
+    const std::size_t points = sweep.count();
+    for (std::size_t pi = 0; pi < points; ++pi) {
+      const Assignment point = sweep_point(sweep, pi);
       json scene = case_scene;
       const std::string where = describe(cc.name, point);
       try {
@@ -128,24 +131,37 @@ std::vector<Member> expand_campaign(const Campaign& campaign) {
       } catch (const SceneError& e) {
         throw CampaignError(std::string("invalid member scene: ") + e.what());
       }
-      m.index = members.size();
       m.case_name = cc.name;
       m.parameters = point;
       m.id = member_id(m.scene, physics_version);
       m.slug = member_slug(cc.name, point);
-      if (auto it = index_by_id.find(m.id); it != index_by_id.end()) {
-        Member& first = members[it->second.first];
-        if (first.case_name == cc.name)
+      const std::uint64_t hash = std::stoull(m.id, nullptr, 16);
+      if (auto it = seen.find(hash); it != seen.end()) {
+        const Seen& first = it->second;
+        const CampaignCase& first_case = cases[first.case_index];
+        if (first.case_index == ci) {
+          const Sweep& first_sweep = first_case.sweep ? *first_case.sweep : campaign.sweep;
           throw campaign_error(campaign.source, "sweep",
-                               where + " gives the same scene as " + it->second.second + " (member " + m.id + ")",
+                               where + " gives the same scene as " +
+                                   describe(first_case.name, sweep_point(first_sweep, first.point)) + " (member " +
+                                   m.id + ")",
                                "every member of a case a different scene");
-        first.other_cases.push_back(cc.name);
+        }
+        also_case(first.member, cc.name);
         continue;
       }
-      index_by_id.emplace(m.id, std::make_pair(members.size(), where));
-      members.push_back(std::move(m));
+      m.index = next_index++;
+      seen.emplace(hash, Seen{m.index, static_cast<std::uint32_t>(ci), pi});
+      visit(std::move(m));
     }
   }
+}
+
+std::vector<Member> expand_campaign(const Campaign& campaign) {
+  std::vector<Member> members;
+  for_each_member(
+      campaign, [&members](Member&& m) { members.push_back(std::move(m)); },
+      [&members](std::size_t index, const std::string& case_name) { members[index].other_cases.push_back(case_name); });
   return members;
 }
 

@@ -9,7 +9,9 @@ std::vector<JoblogEntry> read_joblog(const std::filesystem::path& path) {
   std::vector<JoblogEntry> entries;
   std::ifstream in(path);
   std::string line;
-  std::getline(in, line);  // header
+  // No header line to skip: with --joblog +FILE (appending, as `study run` does) GNU Parallel
+  // writes none when it creates the file, so the first line may be a row. A header ("Seq
+  // Host ...") does not parse as a row and is skipped below like any other.
   while (std::getline(in, line)) {
     std::vector<std::string> fields;
     std::stringstream ss(line);

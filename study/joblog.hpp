@@ -17,7 +17,8 @@ struct JoblogEntry {
   std::string command;
 };
 
-// Missing file -> empty list. Rows that do not parse are skipped.
+// Missing file -> empty list. Rows that do not parse (a header line) are skipped. The
+// file holds every run's rows (study run appends); filter on start to get one run's.
 std::vector<JoblogEntry> read_joblog(const std::filesystem::path& path);
 
 }  // namespace capsule::study

@@ -78,10 +78,11 @@ MemberCondition inspect_member(const MemberPaths& paths, const std::string& expe
   return {MemberState::fresh, ""};
 }
 
-bool needs_run(const MemberCondition& condition, bool rerun_unstable) {
+bool needs_run(const MemberCondition& condition, bool rerun_unstable, bool rerun_stopped) {
   switch (condition.state) {
     case MemberState::complete: return false;
     case MemberState::unstable: return rerun_unstable;
+    case MemberState::stopped: return rerun_stopped;
     default: return true;
   }
 }

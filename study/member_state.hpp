@@ -27,9 +27,10 @@ const char* state_name(MemberState state);  // "new", "interrupted", "complete",
 // Reads member.h5 (status and member_id only), else exit_status and the end of capsule.log.
 MemberCondition inspect_member(const MemberPaths& paths, const std::string& expected_id);
 
-// True when `study run` must (re)run the member: everything except complete, and except
-// unstable unless rerun_unstable (same id = same scene and physics = same blow-up; a
-// failed or stopped member may have met a transient problem, so it is retried).
-bool needs_run(const MemberCondition& condition, bool rerun_unstable);
+// True when `study run` must (re)run the member: everything except complete; unstable
+// only with rerun_unstable (same id = same scene and physics = same blow-up) and stopped
+// only with rerun_stopped (the solver refused the configuration: rerunning it gives the
+// same stop). A failed member (no member file: killed, crashed, foreign file) is retried.
+bool needs_run(const MemberCondition& condition, bool rerun_unstable, bool rerun_stopped);
 
 }  // namespace capsule::study

@@ -1,8 +1,11 @@
 #pragma once
 // Where a campaign's results live:
 //   <results>/<campaign>/campaign.json      the campaign file as last run
-//   <results>/<campaign>/run.json           code version, host, jobs x threads, times, summary
-//   <results>/<campaign>/joblog             GNU Parallel's --joblog of the last run
+//   <results>/<campaign>/campaign_source    the absolute path of the campaign file that made it
+//   <results>/<campaign>/run.json           code version, host, jobs x threads, times, summary (last run)
+//   <results>/<campaign>/runs.jsonl         every run's run.json, one line each, oldest first
+//   <results>/<campaign>/joblog             GNU Parallel's --joblog, appended by every run
+//   <results>/<campaign>/.lock, .running    the run lock and who holds it (run_lock.hpp)
 //   <results>/<campaign>/jobs               the job list handed to GNU Parallel (member dirs)
 //   <results>/<campaign>/run_member.sh      the generated wrapper that runs one member
 //   <results>/<campaign>/members/<slug>-<id>/{scene.json, member.h5, capsule.log, exit_status}
@@ -25,7 +28,10 @@ struct ResultsLayout {
   ResultsLayout(const std::filesystem::path& results_dir, const std::string& campaign_name);
 
   std::filesystem::path campaign_json() const { return root / "campaign.json"; }
+  std::filesystem::path campaign_source() const { return root / "campaign_source"; }
   std::filesystem::path run_json() const { return root / "run.json"; }
+  std::filesystem::path run_history() const { return root / "runs.jsonl"; }
+  std::filesystem::path running_info() const { return root / ".running"; }
   std::filesystem::path joblog() const { return root / "joblog"; }
   std::filesystem::path jobs_file() const { return root / "jobs"; }
   std::filesystem::path wrapper() const { return root / "run_member.sh"; }

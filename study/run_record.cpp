@@ -3,10 +3,13 @@
 #include <chrono>
 #include <ctime>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <unistd.h>
 
 #include "build_info.hpp"
 #include "solver/scene/version.hpp"
+#include "study/results_layout.hpp"
 
 namespace capsule::study {
 
@@ -32,6 +35,18 @@ nlohmann::json run_record_start(const std::string& campaign_name, const std::str
           {"physics_version", capsule::physics_version},
           {"host", host_name()},
           {"started", utc_now_iso8601()}};
+}
+
+void append_run_history(const std::filesystem::path& history, const nlohmann::json& record) {
+  std::string text;
+  {
+    std::ifstream in(history, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    text = s.str();
+  }
+  if (!text.empty() && text.back() != '\n') text += '\n';
+  write_file_atomically(history, text + record.dump() + "\n");
 }
 
 }  // namespace capsule::study

@@ -3,17 +3,26 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "solver/app/cli_support.hpp"
 #include "solver/lbm/bench.hpp"
 #include "solver/run/run_member.hpp"
 #include "solver/scene/scene.hpp"
+
+namespace {
+// README "Exit status"; run_member() and `check` return these.
+const char* const exit_codes =
+    "Exit status: 0 complete (check: the scene is valid), 1 the solver failed or a file could not be\n"
+    "written, 2 bad scene, output path or command line (nothing was run), 3 the member ended unstable.";
+}  // namespace
 
 int main(int argc, char** argv) {
   // `capsule SCENE -o OUT` is the common form; subcommands `check` and `bench` sit beside it.
   if (argc >= 2 && std::string(argv[1]) == "check") {
     CLI::App app{"capsule check: validate a scene and print it with every default filled in"};
+    app.footer(exit_codes);
     std::string scene;
     app.add_option("scene", scene, "scene JSON file")->required();
-    CLI11_PARSE(app, argc - 1, argv + 1);
+    if (const int code = capsule::cli::parse_or_exit_code(app, argc - 1, argv + 1); code >= 0) return code;
     try {
       auto s = capsule::Scene::load(scene);
       std::cout << s.to_json().dump(2) << "\n";
@@ -25,25 +34,29 @@ int main(int argc, char** argv) {
   }
   if (argc >= 2 && std::string(argv[1]) == "bench") {
     CLI::App app{"capsule bench: performance benchmarks"};
+    app.footer("Exit status: 0 done, 1 failure, 2 bad command line.");
     std::string what;
     bool quick = false;
     int threads = 0;
     app.add_option("what", what, "what to benchmark: lbm")->required()->check(CLI::IsMember({"lbm"}));
     app.add_flag("--quick", quick, "fewer steps per measurement");
-    app.add_option("--threads", threads, "largest thread count to try (0 = all cores)");
-    CLI11_PARSE(app, argc - 1, argv + 1);
+    app.add_option("--threads", threads, "largest thread count to try (0 = all cores)")
+        ->check(capsule::cli::whole_number_at_least(0));
+    if (const int code = capsule::cli::parse_or_exit_code(app, argc - 1, argv + 1); code >= 0) return code;
     return capsule::lbm::bench_lbm(quick, threads);
   }
   CLI::App app{"capsule: one capsule in shear flow (IB + MRT lattice Boltzmann + membrane FEM)\n"
                "  capsule SCENE.json -o MEMBER.h5   run one scene\n"
                "  capsule check SCENE.json          validate a scene\n"
                "  capsule bench lbm                 fluid benchmark"};
+  app.footer(exit_codes);
   capsule::RunOptions opt;
   app.add_option("scene", opt.scene_path, "scene JSON file")->required()->check(CLI::ExistingFile);
   app.add_option("-o,--output", opt.output_path, "member file to write (HDF5)")->required();
-  app.add_option("--threads", opt.threads, "OpenMP threads inside this member (0 = OMP default)");
+  app.add_option("--threads", opt.threads, "OpenMP threads inside this member (0 = OMP default)")
+      ->check(capsule::cli::whole_number_at_least(0));
   app.add_option("--id", opt.member_id, "member id to record (set by study)");
   app.add_flag("-q,--quiet", opt.quiet, "no progress lines");
-  CLI11_PARSE(app, argc, argv);
+  if (const int code = capsule::cli::parse_or_exit_code(app, argc, argv); code >= 0) return code;
   return capsule::run_member(opt);
 }

@@ -71,9 +71,15 @@ void write_matrix(hid_t group, const std::string& name, const double* data, hsiz
   if (rows > 0) check(H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), path, "write " + name);
 }
 
+// HDF5 prints its own error stack to stderr by default (twenty lines for a missing
+// folder); we report errors ourselves, in one line naming the path.
+struct QuietHdf5 {
+  QuietHdf5() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+};
+
 }  // namespace
 
-MemberWriter::MemberWriter(std::string final_path) : final_path_(std::move(final_path)) {}
+MemberWriter::MemberWriter(std::string final_path) : final_path_(std::move(final_path)) { static QuietHdf5 quiet; }
 
 void MemberWriter::set_attribute(const std::string& name, const std::string& value) { attributes_[name] = value; }
 void MemberWriter::set_attribute(const std::string& name, double value) { attributes_[name] = value; }
@@ -241,11 +247,6 @@ std::vector<std::string> children(hid_t group) {
   H5Literate(group, H5_INDEX_NAME, H5_ITER_INC, &idx, collect_name, &list);
   return list.names;
 }
-
-// HDF5 prints its own error stack to stderr by default; we report errors ourselves.
-struct QuietHdf5 {
-  QuietHdf5() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
-};
 
 }  // namespace
 

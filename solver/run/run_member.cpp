@@ -10,6 +10,7 @@
 
 #include "build_info.hpp"
 #include "solver/io/member_file.hpp"
+#include "solver/io/output_path.hpp"
 #include "solver/run/simulation2d.hpp"
 #include "solver/run/simulation3d.hpp"
 #include "solver/scene/scene.hpp"
@@ -36,6 +37,10 @@ std::string host_name() {
 }  // namespace
 
 int run_member(const RunOptions& options) {
+  if (const std::string problem = io::output_path_problem(options.output_path); !problem.empty()) {
+    std::cerr << "capsule: " << problem << "\n";
+    return 2;
+  }
   Scene scene;
   try {
     scene = Scene::load(options.scene_path);

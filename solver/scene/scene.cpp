@@ -1,11 +1,14 @@
 #include "solver/scene/scene.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <optional>
 #include <set>
 #include <sstream>
+
+#include "solver/scene/json_text.hpp"
 
 namespace capsule {
 namespace {
@@ -163,6 +166,27 @@ PhaseSpec read_phase(const json& j, const std::string& source, const std::string
   return p;
 }
 
+// Keys the model of the other dimension reads are put back to their defaults, so the
+// canonical scene -- and with it the member id -- does not depend on values this model
+// ignores. 2D (simulation2d.cpp) reads none of C, G, c0, volume_penalty, power_law.n,
+// mesh_level, kernel or snapshots (K > 0 and a kernel other than peskin4 are refused
+// above); 3D reads no segments.
+void ignore_other_dimension(Scene& s) {
+  const Scene defaults;
+  if (s.dim == 2) {
+    s.C = defaults.C;
+    s.G = defaults.G;
+    s.c0 = defaults.c0;
+    s.volume_penalty = defaults.volume_penalty;
+    s.power_law_n = defaults.power_law_n;
+    s.mesh_level = defaults.mesh_level;
+    s.kernel = defaults.kernel;
+    s.snapshots = defaults.snapshots;
+  } else {
+    s.segments = defaults.segments;
+  }
+}
+
 }  // namespace
 
 Scene Scene::from_json(const json& j, const std::string& source) {
@@ -201,6 +225,10 @@ Scene Scene::from_json(const json& j, const std::string& source) {
     ObjectReader p(pl, source, r.child_path("power_law"));
     s.power_law_K = p.number("K", 0.0, 0.0, 1e3);
     s.power_law_n = p.number("n", 1.0, 0.0, 3.0, true);
+    // The 2D driver refuses it (simulation2d.cpp); `capsule check` and `study plan` must too.
+    if (s.dim == 2 && s.power_law_K > 0)
+      p.fail("K", "the power-law membrane viscosity (Sec. 5.2) is a 3D model; in 2D use eta (Kelvin-Voigt)",
+             "0 in 2D");
     p.refuse_unknown({"K", "n"});
   }
   {
@@ -254,17 +282,22 @@ Scene Scene::from_json(const json& j, const std::string& source) {
   r.refuse_unknown({"dim", "shape", "law", "C", "Re", "Ca", "E_b", "V", "eta", "G", "c0",
                     "reference_case", "volume_penalty", "power_law", "conventions", "resolution",
                     "protocol", "output"});
+  ignore_other_dimension(s);
   return s;
 }
 
 Scene Scene::load(const std::string& path) {
-  std::ifstream in(path);
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw SceneError(path + ": is a folder, not a scene file");
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(path + ": cannot open the scene file");
+  std::ostringstream text;
+  text << in.rdbuf();
   json j;
   try {
-    in >> j;
-  } catch (const json::parse_error& e) {
-    throw SceneError(path + ": not valid JSON: " + e.what());
+    j = parse_json_text(text.str(), path);
+  } catch (const JsonTextError& e) {
+    throw SceneError(e.what());
   }
   return from_json(j, path);
 }

@@ -3,22 +3,38 @@
 #include <iostream>
 #include <unistd.h>
 
+#include "solver/app/cli_support.hpp"
 #include "solver/scene/scene.hpp"
 #include "study/analysis_bridge.hpp"
 #include "study/campaign_error.hpp"
+#include "study/campaign_owner.hpp"
 #include "study/campaign_runner.hpp"
 #include "study/campaign_survey.hpp"
+#include "study/exit_status.hpp"
 #include "study/plan_table.hpp"
+#include "study/run_lock.hpp"
+#include "study/script_path.hpp"
 #include "study/slurm_export.hpp"
+#include "study/status_json.hpp"
 
 namespace {
 
 using namespace capsule::study;
 
+CLI::Validator slurm_form(bool (*accepts)(const std::string&), const std::string& allowed) {
+  return CLI::Validator(
+      [accepts, allowed](std::string& text) -> std::string {
+        return accepts(text) ? "" : "\"" + text + "\" is not in Slurm's form (allowed: " + allowed + ")";
+      },
+      "SLURM");
+}
+
 int main_body(int argc, char** argv) {
   CLI::App app{"study: expand campaigns into members, run them with GNU Parallel, resume, report"};
+  app.footer(exit_status_help());
   app.require_subcommand(1);
   std::string results_dir = "results";
+  const auto count = capsule::cli::whole_number_at_least(1);
 
   std::string plan_file;
   auto* plan = app.add_subcommand("plan", "list the members, their state and cost; changes nothing");
@@ -27,25 +43,31 @@ int main_body(int argc, char** argv) {
 
   RunRequest run_request;
   auto* run = app.add_subcommand("run", "run every member that is not complete (GNU Parallel); resumable");
+  run->footer(exit_status_help());
   run->add_option("campaign", run_request.campaign_file, "campaign JSON file")->required();
   run->add_option("--jobs,-j", run_request.jobs, "members at once (default: 2D members one thread each, as many at once as cores; 3D: one member on every core)")
-      ->check(CLI::PositiveNumber);
-  run->add_option("--threads,-t", run_request.threads, "OpenMP threads per member (default: chosen)")
-      ->check(CLI::PositiveNumber);
+      ->check(count);
+  run->add_option("--threads,-t", run_request.threads, "OpenMP threads per member (default: chosen)")->check(count);
   run->add_option("--hosts", run_request.hosts_file,
                   "GNU Parallel --sshloginfile: run members on these hosts (shared filesystem assumed)")
       ->check(CLI::ExistingFile);
   run->add_option("--ssh", run_request.ssh_command, "ssh command for --hosts (GNU Parallel --ssh)");
   run->add_flag("--rerun-unstable", run_request.rerun_unstable, "also rerun members that ended unstable");
+  run->add_flag("--rerun-stopped", run_request.rerun_stopped,
+                "also rerun members that stopped (the solver refused their configuration)");
   run->add_option("--results", results_dir, "results folder")->capture_default_str();
 
   std::string status_file;
+  bool status_as_json = false;
   auto* status = app.add_subcommand("status", "counts per state and the reasons of failed / unstable members");
+  status->footer(exit_status_help());
   status->add_option("campaign", status_file, "campaign JSON file")->required();
+  status->add_flag("--json", status_as_json, "print the status as one JSON object (for scripts)");
   status->add_option("--results", results_dir, "results folder")->capture_default_str();
 
   std::string report_file;
   auto* report = app.add_subcommand("report", "fit, tabulate and plot: results/<campaign>/report");
+  report->footer(exit_status_help());
   report->add_option("campaign", report_file, "campaign JSON file")->required();
   report->add_option("--results", results_dir, "results folder")->capture_default_str();
 
@@ -57,21 +79,32 @@ int main_body(int argc, char** argv) {
   compare->add_option("--results", results_dir, "results folder")->capture_default_str();
 
   std::string export_file;
-  bool slurm = false, export_rerun_unstable = false;
-  int export_threads = 0;
+  bool slurm = false;
+  SlurmOptions slurm_options;
   auto* exporter = app.add_subcommand("export", "write a job list and a Slurm array script");
   exporter->add_option("campaign", export_file, "campaign JSON file")->required();
   exporter->add_flag("--slurm", slurm, "write slurm/jobs and slurm/capsule.sbatch")->required();
-  exporter->add_option("--threads,-t", export_threads, "CPUs per task (default: 1 for 2D, all cores for 3D)")
-      ->check(CLI::PositiveNumber);
-  exporter->add_flag("--rerun-unstable", export_rerun_unstable, "include members that ended unstable");
+  exporter->add_option("--threads,-t", slurm_options.threads,
+                       "CPUs per task (default: 1 for 2D, " + std::to_string(default_3d_cpus) + " for 3D)")
+      ->check(count);
+  exporter->add_option("--time", slurm_options.time,
+                       "Slurm --time per task (default: from the cost estimate of the largest member)")
+      ->check(slurm_form(is_slurm_time, "minutes, H:MM:SS, D-HH[:MM[:SS]]"));
+  exporter->add_option("--mem", slurm_options.mem,
+                       "Slurm --mem per task (default: from the lattice size of the largest member)")
+      ->check(slurm_form(is_slurm_mem, "megabytes, or a number with K, M, G or T"));
+  exporter->add_flag("--rerun-unstable", slurm_options.rerun_unstable, "include members that ended unstable");
+  exporter->add_flag("--rerun-stopped", slurm_options.rerun_stopped, "include members that stopped");
   exporter->add_option("--results", results_dir, "results folder")->capture_default_str();
 
-  CLI11_PARSE(app, argc, argv);
+  if (const int code = capsule::cli::parse_or_exit_code(app, argc, argv); code >= 0) return code;
 
   if (*plan) {
-    print_plan(survey_campaign(plan_file, results_dir), std::cout);
-    return 0;
+    const Campaign campaign = load_campaign(plan_file);
+    const ResultsLayout layout(results_dir, campaign.name);
+    require_same_campaign(campaign, layout);
+    print_plan(campaign, layout, std::cout);  // member by member: bounded memory
+    return exit_ok;
   }
   if (*run) {
     run_request.results_dir = results_dir;
@@ -79,20 +112,26 @@ int main_body(int argc, char** argv) {
     return run_campaign(run_request, std::cout).exit_code;
   }
   if (*status) {
-    print_status(survey_campaign(status_file, results_dir), std::cout);
-    return 0;
+    const CampaignSurvey survey = survey_campaign(status_file, results_dir);
+    if (status_as_json) std::cout << status_json(survey).dump(2) << "\n";
+    else print_status(survey, std::cout);
+    return members_exit_code(survey);
   }
   if (*report) return report_campaign(survey_campaign(report_file, results_dir), std::cout);
   if (*compare) return compare_campaign_files(compare_files, table2, results_dir, std::cout);
   if (*exporter) {
     const CampaignSurvey survey = survey_campaign(export_file, results_dir);
-    const SlurmExport e = export_slurm(survey, export_threads, export_rerun_unstable);
+    const SlurmExport e = export_slurm(survey, slurm_options);
     std::cout << "job list: " << e.job_list.string() << "\nscript:   " << e.script.string() << "\n"
-              << e.pending.size() << " of " << survey.members.size() << " members to run; submit with: sbatch "
-              << e.script.string() << "\n";
-    return 0;
+              << e.pending.size() << " of " << survey.members.size() << " members to run";
+    if (e.pending.empty())
+      std::cout << ": nothing to submit\n";
+    else
+      std::cout << " (" << e.resources.cpus << " CPUs, --time " << e.resources.time << ", --mem "
+                << e.resources.mem << " per task); submit with: sbatch " << e.script.string() << "\n";
+    return exit_ok;
   }
-  return 2;
+  return exit_usage;
 }
 
 }  // namespace
@@ -102,12 +141,18 @@ int main(int argc, char** argv) {
     return main_body(argc, argv);
   } catch (const CampaignError& e) {
     std::cerr << "study: " << e.what() << "\n";
-    return 2;
+    return exit_usage;
   } catch (const capsule::SceneError& e) {
     std::cerr << "study: " << e.what() << "\n";
-    return 2;
+    return exit_usage;
+  } catch (const UnsafePathError& e) {
+    std::cerr << "study: " << e.what() << "\n";
+    return exit_usage;
+  } catch (const RunStillGoing& e) {
+    std::cerr << "study: " << e.what() << "\n";
+    return exit_run_still_going;
   } catch (const std::exception& e) {
     std::cerr << "study: " << e.what() << "\n";
-    return 1;
+    return exit_failure;
   }
 }

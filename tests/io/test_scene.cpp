@@ -140,3 +140,39 @@ TEST_CASE("3D relaxation-time rule: tau = 1.5 where stable, lowered by the coupl
   j["resolution"]["tau"] = 1.0;
   CHECK(capsule::choose_tau(Scene::from_json(j, "t.json")) == 1.0);
 }
+
+TEST_CASE("a 2D scene's canonical form does not depend on keys the 2D model ignores", "[scene]") {
+  const json plain = Scene::from_json(minimal_2d(), "a").to_json();
+  json j = minimal_2d();
+  j["C"] = 100;
+  j["G"] = 10;
+  j["c0"] = -2.09;
+  j["volume_penalty"] = 5;
+  j["power_law"] = {{"n", 0.64}};
+  j["resolution"] = {{"mesh_level", 6}, {"kernel", "peskin4"}};
+  j["output"] = {{"snapshots", "vtk"}};
+  CHECK(Scene::from_json(j, "b").to_json() == plain);
+  // A 2D key still matters, and a 3D scene ignores segments instead.
+  json k = minimal_2d();
+  k["resolution"] = {{"segments", 200}};
+  CHECK(Scene::from_json(k, "c").to_json() != plain);
+  json three = minimal_2d();
+  three["dim"] = 3;
+  three["shape"] = "sphere";
+  const json three_plain = Scene::from_json(three, "d").to_json();
+  three["resolution"] = {{"segments", 200}};
+  CHECK(Scene::from_json(three, "e").to_json() == three_plain);
+  three["resolution"] = {{"mesh_level", 3}};
+  CHECK(Scene::from_json(three, "f").to_json() != three_plain);
+}
+
+TEST_CASE("a 2D scene with a power-law membrane is refused at validation, as the run refuses it", "[scene]") {
+  json j = minimal_2d();
+  j["power_law"] = {{"K", 0.1}};
+  CHECK_THROWS_WITH(Scene::from_json(j, "scenes/p.json"),
+                    Catch::StartsWith("scenes/p.json: power_law.K: ") && Catch::Contains("3D model") &&
+                        Catch::Contains("(allowed: 0 in 2D)"));
+  j["dim"] = 3;
+  j["shape"] = "sphere";
+  CHECK_NOTHROW(Scene::from_json(j, "scenes/p.json"));
+}

@@ -18,7 +18,10 @@ TEST_CASE("every campaign file plans without error", "[study]") {
     ++files;
     INFO(entry.path().string());
     std::ostringstream out;
-    CHECK_NOTHROW(print_plan(survey_campaign(entry.path().string(), results), out));
+    {
+      const Campaign c = load_campaign(entry.path().string());
+      CHECK_NOTHROW(print_plan(c, ResultsLayout(results, c.name), out));
+    }
     const CampaignSurvey s = survey_campaign(entry.path().string(), results);
     CHECK(s.members.size() >= 1);
     CHECK(s.campaign.name == entry.path().stem().string());  // results/<name> matches the file name

@@ -82,12 +82,24 @@ TEST_CASE("member ids hash the canonical scene: spelling does not matter, parame
 
   // Any parameter change gives a new id.
   for (const auto& [key, value] : std::vector<std::pair<std::string, json>>{
-           {"E_b", 0.001}, {"V", 2.0}, {"Re", 0.1}, {"eta", 1.0}, {"c0", 0.5}}) {
+           {"E_b", 0.001}, {"V", 2.0}, {"Re", 0.1}, {"eta", 1.0}}) {
     json changed = doc;
     changed["base"][key] = value;
     INFO(key);
     CHECK(expand_text(changed).at(0).id != id);
   }
+  // A key the 2D model does not read (c0, mesh_level: 3D only) leaves a 2D id alone; in 3D it matters.
+  json spontaneous = doc;
+  spontaneous["base"]["c0"] = 0.5;
+  spontaneous["base"]["resolution"]["mesh_level"] = 5;
+  CHECK(expand_text(spontaneous).at(0).id == id);
+  json three = doc;
+  three["base"]["dim"] = 3;
+  three["base"]["shape"] = "sphere";
+  three["base"]["resolution"] = {{"a", 4}};
+  const std::string id_3d = expand_text(three).at(0).id;
+  three["base"]["c0"] = 0.5;
+  CHECK(expand_text(three).at(0).id != id_3d);
   json finer = doc;
   finer["base"]["resolution"]["a"] = 5;
   CHECK(expand_text(finer).at(0).id != id);

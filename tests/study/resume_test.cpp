@@ -118,3 +118,42 @@ TEST_CASE("a run killed with SIGKILL resumes: only incomplete members rerun", "[
   CHECK(third.output.find("nothing to run") != std::string::npos);
   fs::remove_all(dir);
 }
+
+TEST_CASE("after kill -9 of study, the next run says the run is still going, with pids and members", "[study]") {
+  const fs::path dir = testing::scratch_dir("still_going");
+  // One member of about 7 s (kt 20 + 8): still running when study is killed.
+  testing::write_text(dir / "c.json", testing::tiny_campaign("still_going", {0.05}, 20, 8).dump(2));
+  const pid_t child = ::fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    ::setsid();
+    ::chdir(dir.c_str());
+    ::setenv("CAPSULE_BIN", testing::capsule_binary().c_str(), 1);
+    const std::string study = testing::study_binary().string();
+    std::freopen("/dev/null", "w", stdout);
+    ::execl(study.c_str(), study.c_str(), "run", "c.json", static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  const CampaignSurvey before = survey_campaign((dir / "c.json").string(), dir / "results");
+  const MemberPaths p = before.layout.member(before.members[0]);
+  bool running = false;
+  for (int i = 0; i < 3000 && !running; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    running = fs::exists(p.partial);
+  }
+  ::kill(child, SIGKILL);  // study only: GNU Parallel and the member go on
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  REQUIRE(running);
+
+  const auto again = testing::run_study({"run", "c.json"}, dir);
+  INFO(again.output);
+  CHECK(again.exit_code == 5);
+  CHECK(again.output.find("still going") != std::string::npos);
+  CHECK(again.output.find("study pid " + std::to_string(child) + " (no longer running)") != std::string::npos);
+  CHECK(again.output.find("GNU Parallel pid ") != std::string::npos);
+  CHECK(again.output.find("(running)") != std::string::npos);
+  CHECK(again.output.find("1 member running: " + before.members[0].dir_name()) != std::string::npos);
+  kill_session(child);
+  fs::remove_all(dir);
+}

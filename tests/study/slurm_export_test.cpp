@@ -3,7 +3,9 @@
 
 #include "study/campaign_survey.hpp"
 #include "study/shell_quote.hpp"
+#include "study/script_path.hpp"
 #include "study/slurm_export.hpp"
+#include "study/slurm_resources.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace capsule::study;
@@ -45,5 +47,80 @@ TEST_CASE("the Slurm script passes bash -n and task i runs member i", "[study]")
   // Exporting again leaves the complete member out of the array.
   REQUIRE(testing::run_study({"export", "c.json", "--slurm"}, dir).exit_code == 0);
   CHECK(testing::read_text(script).find("#SBATCH --array=0,2\n") != std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("Slurm export refuses a results path with a line break before writing anything", "[study]") {
+  const fs::path dir = testing::scratch_dir("slurm_newline");
+  testing::write_text(dir / "c.json", testing::tiny_campaign("slurm_nl", {0.01}, 1, 1).dump());
+  const std::string results = "res\ntouch INJECTED\n";
+  const auto r = testing::run_study({"export", "c.json", "--slurm", "--results", results}, dir);
+  INFO(r.output);
+  CHECK(r.exit_code == 2);
+  CHECK(r.output.find("the results folder contains a control character (byte 0x0a") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir / results));
+  CHECK_FALSE(fs::exists(dir / "INJECTED"));
+  // study run refuses it the same way.
+  const auto run = testing::run_study({"run", "c.json", "--results", results}, dir);
+  CHECK(run.exit_code == 2);
+  CHECK(run.output.find("control character") != std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("the #SBATCH --output line is quoted, with % doubled", "[study]") {
+  CHECK(sbatch_output_line("/shared/my results/100%/slurm") ==
+        "#SBATCH --output=\"/shared/my results/100%%/slurm/task-%a.out\"");
+  CHECK_THROWS_AS(sbatch_output_line("/shared/a\"b/slurm"), UnsafePathError);
+}
+
+TEST_CASE("Slurm resources: CPUs from --threads or the dimension, not this machine; --time and --mem", "[study]") {
+  const fs::path dir = testing::scratch_dir("slurm_resources");
+  nlohmann::json doc = testing::tiny_campaign("slurm3d", {0.05}, 1, 1);
+  doc["base"]["dim"] = 3;
+  doc["base"]["shape"] = "sphere";
+  doc["base"]["resolution"] = {{"a", 4}, {"mesh_level", 2}};
+  testing::write_text(dir / "c.json", doc.dump());
+  REQUIRE(testing::run_study({"export", "c.json", "--slurm"}, dir).exit_code == 0);
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const fs::path script = s.layout.slurm_dir() / "capsule.sbatch";
+  std::string text = testing::read_text(script);
+  INFO(text);
+  CHECK(text.find("#SBATCH --cpus-per-task=" + std::to_string(default_3d_cpus) + "\n") != std::string::npos);
+  const long minutes = estimated_minutes(s.members[0], default_3d_cpus);
+  CHECK(minutes >= 10);
+  CHECK(text.find("#SBATCH --time=" + std::to_string(std::max(15L, minutes)) + "\n") != std::string::npos);
+  CHECK(text.find("#SBATCH --mem=" + std::to_string(estimated_megabytes(s.members[0])) + "\n") != std::string::npos);
+  CHECK(text.find("#SBATCH --output=\"") != std::string::npos);
+  CHECK(testing::run_shell("bash -n " + shell_quote(script.string())).exit_code == 0);
+
+  REQUIRE(testing::run_study({"export", "c.json", "--slurm", "-t", "3", "--time", "2:00:00", "--mem", "4G"}, dir)
+              .exit_code == 0);
+  text = testing::read_text(script);
+  CHECK(text.find("#SBATCH --cpus-per-task=3\n") != std::string::npos);
+  CHECK(text.find("#SBATCH --time=2:00:00\n") != std::string::npos);
+  CHECK(text.find("#SBATCH --mem=4G\n") != std::string::npos);
+  CHECK(is_slurm_time("90"));
+  CHECK(is_slurm_time("1-12:00"));
+  CHECK_FALSE(is_slurm_time("1h; rm -rf /"));
+  CHECK(is_slurm_mem("2048"));
+  CHECK_FALSE(is_slurm_mem("4 GB"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("with nothing pending the Slurm script has no --array and exits 0", "[study]") {
+  const fs::path dir = testing::scratch_dir("slurm_done");
+  testing::write_text(dir / "c.json", testing::tiny_campaign("slurm_done", {0.05}, 1, 1).dump());
+  REQUIRE(testing::run_study({"run", "c.json"}, dir).exit_code == 0);
+  const auto exported = testing::run_study({"export", "c.json", "--slurm"}, dir);
+  INFO(exported.output);
+  REQUIRE(exported.exit_code == 0);
+  CHECK(exported.output.find("0 of 1 members to run: nothing to submit") != std::string::npos);
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const fs::path script = s.layout.slurm_dir() / "capsule.sbatch";
+  const std::string text = testing::read_text(script);
+  CHECK(text.find("#SBATCH --array") == std::string::npos);
+  const auto task = testing::run_shell("bash " + shell_quote(script.string()));
+  CHECK(task.exit_code == 0);
+  CHECK(task.output.find("nothing to run") != std::string::npos);
   fs::remove_all(dir);
 }

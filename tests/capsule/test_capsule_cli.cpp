@@ -1,0 +1,115 @@
+// The capsule command line: output paths checked before the first step (one line naming
+// the path), `check` refusing what `run` refuses, and the documented exit status 2 for
+// command-line errors (CLI11 returns 104-109 by default).
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int exit_code = -1;
+  std::string output;
+};
+
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+Result capsule(const std::string& args) {
+  Result r;
+  const std::string line = quote(std::string(CAPSULE_BINARY_DIR) + "/solver/capsule") + " " + args + " 2>&1 </dev/null";
+  FILE* pipe = ::popen(line.c_str(), "r");
+  std::array<char, 4096> buffer{};
+  std::size_t n;
+  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.output.append(buffer.data(), n);
+  const int status = ::pclose(pipe);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::size_t lines(const std::string& text) {
+  std::size_t n = 0;
+  for (char c : text) n += c == '\n';
+  return n;
+}
+
+fs::path scratch() {
+  const fs::path d = fs::temp_directory_path() / ("capsule_cli_test_" + std::to_string(::getpid()));
+  fs::create_directories(d);
+  return d;
+}
+
+const std::string scene = quote(std::string(CAPSULE_SOURCE_DIR) + "/tests/data/scenes/circle_quick_2d.json");
+
+}  // namespace
+
+TEST_CASE("capsule -o naming a folder fails before the first step, in one line", "[capsule2d]") {
+  const fs::path dir = scratch();
+  const Result r = capsule(scene + " -o " + quote(dir.string()) + " --quiet");
+  INFO(r.output);
+  CHECK(r.exit_code == 2);
+  CHECK(lines(r.output) == 1);
+  CHECK(r.output.find(dir.string() + ": is a folder") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir.string() + ".partial"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("capsule -o in a missing folder prints one line naming it, no HDF5 stack", "[capsule2d]") {
+  const fs::path dir = scratch();
+  const fs::path out = dir / "no" / "such" / "m.h5";
+  const Result r = capsule(scene + " -o " + quote(out.string()) + " --quiet");
+  INFO(r.output);
+  CHECK(r.exit_code == 2);
+  CHECK(lines(r.output) == 1);
+  CHECK(r.output.find("the folder " + (dir / "no" / "such").string() + " does not exist") != std::string::npos);
+  CHECK(r.output.find("HDF5") == std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("capsule check refuses a 2D power-law scene, as the run does", "[capsule2d]") {
+  const fs::path dir = scratch();
+  std::ifstream in(std::string(CAPSULE_SOURCE_DIR) + "/tests/data/scenes/circle_quick_2d.json");
+  nlohmann::json j = nlohmann::json::parse(in);
+  j["power_law"] = {{"K", 0.1}, {"n", 0.64}};
+  std::ofstream(dir / "p.json") << j.dump();
+  const Result check = capsule("check " + quote((dir / "p.json").string()));
+  INFO(check.output);
+  CHECK(check.exit_code == 2);
+  CHECK(check.output.find((dir / "p.json").string() + ": power_law.K: ") != std::string::npos);
+  const Result run = capsule(quote((dir / "p.json").string()) + " -o " + quote((dir / "p.h5").string()) + " --quiet");
+  CHECK(run.exit_code == 2);
+  CHECK_FALSE(fs::exists(dir / "p.h5"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("capsule command-line errors exit 2, and --help documents the exit status", "[capsule2d]") {
+  const fs::path dir = scratch();
+  const std::string out = " -o " + quote((dir / "m.h5").string());
+  for (const std::string& args : {scene + out + " --threads -1", scene + out + " --threads two", scene + out + " --frob",
+                                 scene, std::string("check"), std::string("bench gpu"),
+                                 std::string("/nonexistent/scene.json") + out}) {
+    INFO("capsule " << args);
+    const Result r = capsule(args);
+    INFO(r.output);
+    CHECK(r.exit_code == 2);
+  }
+  CHECK(capsule(scene + out + " --threads -1").output.find("must be a whole number from 0") != std::string::npos);
+  const Result help = capsule("--help");
+  CHECK(help.exit_code == 0);
+  CHECK(help.output.find("Exit status: 0 complete") != std::string::npos);
+  CHECK(help.output.find("3 the member ended unstable") != std::string::npos);
+  CHECK(capsule("check --help").output.find("Exit status:") != std::string::npos);
+  fs::remove_all(dir);
+}
