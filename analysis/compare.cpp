@@ -12,19 +12,13 @@
 #include "analysis/fit_result.hpp"
 #include "analysis/member_compare.hpp"
 #include "analysis/table.hpp"
-#include "analysis/table2_reference.hpp"
+#include "analysis/table2_compare.hpp"
 
 namespace capsule::analysis {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-struct BilinearEntry {
-  std::string campaign, case_name, target;
-  double Ca = NAN, E_b = NAN;
-  FitResult fit;
-};
 
 nlohmann::json read_fits_json(const CompareEntry& e) {
   const fs::path path = fs::path(e.report_dir) / "fits.json";
@@ -39,32 +33,7 @@ nlohmann::json read_fits_json(const CompareEntry& e) {
   return j;
 }
 
-std::vector<BilinearEntry> read_bilinear(const CompareEntry& e, const nlohmann::json& j) {
-  std::vector<BilinearEntry> out;
-  for (const auto& b : j.value("bilinear", nlohmann::json::array())) {
-    BilinearEntry be;
-    be.campaign = e.name;
-    be.case_name = b.value("case", "");
-    be.target = b.value("target", "");
-    be.Ca = b.contains("Ca") && b["Ca"].is_number() ? b["Ca"].get<double>() : NAN;
-    be.E_b = b.contains("E_b") && b["E_b"].is_number() ? b["E_b"].get<double>() : NAN;
-    be.fit = fit_result_from_json(b.at("fit"));
-    out.push_back(be);
-  }
-  return out;
-}
-
-bool overlap(double lo1, double hi1, double lo2, double hi2) { return lo1 <= hi2 && lo2 <= hi1; }
-
-std::string pm(double v, double hw) { return format_number(v) + " ± " + format_number(hw); }
-
-// Table 2's row names the bare time: "response.k_tau_s" -> "k_tau_s".
-std::string bare_time(const std::string& target) {
-  const auto dot = target.find('.');
-  return dot == std::string::npos ? target : target.substr(dot + 1);
-}
-
-bool same(double x, double y) { return std::abs(x - y) <= 1e-9 * std::max(1.0, std::abs(y)); }  // parsed decimals
+std::string pm(double v, double hw) { return plus_minus(v, hw); }
 
 }  // namespace
 
@@ -75,7 +44,7 @@ int compare_campaigns(const std::vector<CompareEntry>& entries, bool against_tab
   bool one_case_each = true;
   for (const auto& e : entries) {
     fits.push_back({e.name, read_fits_json(e)});
-    all.push_back(read_bilinear(e, fits.back().fits));
+    all.push_back(read_bilinear_entries(e.name, fits.back().fits));
     std::map<std::string, int> cases;
     for (const auto& b : all.back()) cases[b.case_name]++;
     std::map<std::string, int> per_target;
@@ -123,7 +92,7 @@ int compare_campaigns(const std::vector<CompareEntry>& entries, bool against_tab
           row.insert(row.end(), {"", ""});
           continue;
         }
-        const bool ov = overlap(params[0]->ci_low, params[0]->ci_high, params[c]->ci_low, params[c]->ci_high);
+        const bool ov = intervals_overlap(params[0]->ci_low, params[0]->ci_high, params[c]->ci_low, params[c]->ci_high);
         if (!ov) status = 1;
         row.push_back(format_number(params[c]->value - params[0]->value));
         row.push_back(ov ? "yes" : "NO");
@@ -150,29 +119,21 @@ int compare_campaigns(const std::vector<CompareEntry>& entries, bool against_tab
                  "95% overlap"};
     for (const auto& campaign : all)
       for (const auto& b : campaign) {
-        const Table2Row* ref = nullptr;
-        for (const auto& r : table2_dissertation())
-          if (r.target == bare_time(b.target) && same(b.Ca, r.Ca) && same(b.E_b, r.E_b)) ref = &r;
+        const Table2Row* ref = table2_row_for(b);
         if (!ref) {
           t2.rows.push_back({b.campaign, b.case_name, b.target, format_number(b.Ca), format_number(b.E_b), "",
                              "", "no Table 2 row for this target, Ca and E_b", "", ""});
           continue;
         }
-        const std::pair<double, double> refs[] = {
-            {ref->a, ref->a_half_width}, {ref->b, ref->b_half_width}, {ref->c, ref->c_half_width}};
-        const char* names[] = {"a", "b", "c"};
-        for (int i = 0; i < 3; ++i) {
-          const auto [rv, rhw] = refs[i];
+        for (const CoefficientComparison& c : compare_with_table2(b.fit, *ref)) {
           std::vector<std::string> row{b.campaign, b.case_name, b.target, format_number(b.Ca), format_number(b.E_b),
-                                       names[i]};
-          if (!b.fit.ok) {
-            row.insert(row.end(), {"n/a: " + b.fit.reason, pm(rv, rhw), "", ""});
+                                       c.name};
+          if (!c.measured) {
+            row.insert(row.end(), {"n/a: " + c.reason, pm(c.reference, c.reference_half_width), "", ""});
           } else {
-            const FitParameter* p = b.fit.parameter(names[i]);
-            const bool ov = overlap(p->ci_low, p->ci_high, rv - rhw, rv + rhw);
-            if (!ov) status = 1;
-            row.insert(row.end(), {pm(p->value, p->half_width()), pm(rv, rhw), format_number(p->value - rv),
-                                   ov ? "yes" : "NO"});
+            if (!c.overlap) status = 1;
+            row.insert(row.end(), {pm(c.value, c.half_width), pm(c.reference, c.reference_half_width),
+                                   format_number(c.difference), c.overlap ? "yes" : "NO"});
           }
           t2.rows.push_back(row);
         }

@@ -8,6 +8,7 @@
 #if __has_include("analysis/report.hpp") && __has_include("analysis/compare.hpp")
 #include "analysis/compare.hpp"
 #include "analysis/report.hpp"
+#include "analysis/thesis_report.hpp"
 #define CAPSULE_STUDY_HAS_REPORT 1
 #endif
 
@@ -66,6 +67,14 @@ int compare_campaign_files(const std::vector<std::string>& campaign_files, bool 
   return analysis::compare_campaigns(entries, against_table2, out, out_dir.string());
 }
 
+int write_thesis_comparison(const fs::path& results_dir, const fs::path& out_file, std::ostream& out) {
+  const analysis::ThesisSummary s = analysis::write_thesis(results_dir.string(), out_file.string());
+  out << "wrote " << s.file << "\nclaims: " << s.agrees << " agree, " << s.differs << " differ, " << s.cannot_tell
+      << " cannot tell\nTable 2 coefficients: " << s.coefficients_overlap << " overlap, " << s.coefficients_disjoint
+      << " do not, " << s.coefficients_unknown << " cannot tell\n";
+  return 0;
+}
+
 #else
 
 int report_campaign(const CampaignSurvey&, std::ostream&) {
@@ -74,6 +83,10 @@ int report_campaign(const CampaignSurvey&, std::ostream&) {
 
 int compare_campaign_files(const std::vector<std::string>&, bool, const fs::path&, std::ostream&) {
   throw std::runtime_error("this build has no campaign comparison (analysis/compare.hpp missing)");
+}
+
+int write_thesis_comparison(const fs::path&, const fs::path&, std::ostream&) {
+  throw std::runtime_error("this build has no dissertation comparison (analysis/thesis_report.hpp missing)");
 }
 
 #endif

@@ -1,5 +1,6 @@
 // `study`: plan, run, track, export and analyse campaigns (README "Studies").
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <iostream>
 #include <unistd.h>
 
@@ -78,6 +79,13 @@ int main_body(int argc, char** argv) {
   compare->add_flag("--table2", table2, "also compare with the dissertation's Table 2");
   compare->add_option("--results", results_dir, "results folder")->capture_default_str();
 
+  std::string thesis_out;
+  auto* thesis = app.add_subcommand(
+      "thesis", "write THESIS.md: Table 2, the ratios b/a and the claims of Chapters 3-5 against the shipped results");
+  thesis->add_option("--results", results_dir, "results folder (reads <results>/<campaign>/report/fits.json)")
+      ->capture_default_str();
+  thesis->add_option("-o,--output", thesis_out, "file to write (default: <results>/THESIS.md)");
+
   std::string export_file;
   bool slurm = false;
   SlurmOptions slurm_options;
@@ -119,6 +127,11 @@ int main_body(int argc, char** argv) {
   }
   if (*report) return report_campaign(survey_campaign(report_file, results_dir), std::cout);
   if (*compare) return compare_campaign_files(compare_files, table2, results_dir, std::cout);
+  if (*thesis) {
+    const std::filesystem::path out = thesis_out.empty() ? std::filesystem::path(results_dir) / "THESIS.md"
+                                                         : std::filesystem::path(thesis_out);
+    return write_thesis_comparison(results_dir, out, std::cout);
+  }
   if (*exporter) {
     const CampaignSurvey survey = survey_campaign(export_file, results_dir);
     const SlurmExport e = export_slurm(survey, slurm_options);

@@ -1,0 +1,89 @@
+#include "analysis/thesis_results.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <stdexcept>
+
+namespace capsule::analysis {
+
+namespace fs = std::filesystem;
+
+std::vector<const ThesisMember*> ThesisCampaign::in_case(const std::string& case_name) const {
+  std::vector<const ThesisMember*> out;
+  std::set<std::string> seen;
+  for (const auto& m : members)
+    if ((case_name.empty() || m.case_name == case_name) && seen.insert(m.slug).second) out.push_back(&m);
+  return out;
+}
+
+std::string resolve_member_file(const std::string& campaign_root, const std::string& recorded) {
+  if (recorded.empty()) return "";
+  const fs::path p(recorded);
+  if (p.is_relative()) {
+    const fs::path q = fs::path(campaign_root) / p;
+    return fs::exists(q) ? q.string() : "";
+  }
+  if (fs::exists(p)) return p.string();
+  const fs::path moved = fs::path(campaign_root) / "members" / p.parent_path().filename() / p.filename();
+  return fs::exists(moved) ? moved.string() : "";
+}
+
+ThesisResults::ThesisResults(std::string results_dir) : dir_(std::move(results_dir)) {}
+
+const ThesisCampaign& ThesisResults::campaign(const std::string& name) const {
+  if (const auto it = campaigns_.find(name); it != campaigns_.end()) return it->second;
+  ThesisCampaign c;
+  c.name = name;
+  const fs::path root = fs::path(dir_) / name;
+  const fs::path path = root / "report" / "fits.json";
+  std::ifstream f(path);
+  if (!f) {
+    c.missing = "campaign " + name + " not run (no " + path.string() + ")";
+    return campaigns_.emplace(name, std::move(c)).first->second;
+  }
+  try {
+    f >> c.fits;
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(path.string() + ": not valid JSON: " + e.what());
+  }
+  c.found = true;
+  for (const auto& j : c.fits.value("members", nlohmann::json::array())) {
+    ThesisMember m;
+    m.id = j.value("id", "");
+    m.slug = j.value("slug", "");
+    m.case_name = j.value("case", "");
+    m.status = j.value("status", "");
+    m.recorded_path = j.value("path", "");
+    // Named copies: items() of a temporary would dangle inside the loop.
+    const nlohmann::json parameters = j.value("parameters", nlohmann::json::object());
+    const nlohmann::json fits = j.value("fits", nlohmann::json::object());
+    for (const auto& [k, v] : parameters.items())
+      if (v.is_number()) m.parameters[k] = v.get<double>();
+    for (const auto& [k, v] : fits.items()) m.fits[k] = fit_result_from_json(v);
+    m.file = resolve_member_file(root.string(), m.recorded_path);
+    c.members.push_back(std::move(m));
+  }
+  return campaigns_.emplace(name, std::move(c)).first->second;
+}
+
+std::optional<io::MemberData> ThesisResults::member_data(const ThesisMember& m, std::string& why,
+                                                         bool accept_unstable) const {
+  if (m.file.empty()) {
+    why = "member file of " + m.slug + " missing (" + (m.recorded_path.empty() ? "no path recorded" : m.recorded_path) + ")";
+    return std::nullopt;
+  }
+  try {
+    io::MemberData d = io::read_member(m.file);
+    if (!d.complete() && !(accept_unstable && d.unstable())) {
+      why = m.slug + " not complete: " + d.status;
+      return std::nullopt;
+    }
+    return d;
+  } catch (const std::exception& e) {
+    why = m.slug + ": unreadable member file: " + e.what();
+    return std::nullopt;
+  }
+}
+
+}  // namespace capsule::analysis

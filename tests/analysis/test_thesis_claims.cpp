@@ -1,0 +1,192 @@
+// THESIS.md's claims table: a claim is "agrees" when synthetic data satisfy its rule,
+// "differs" when they contradict it, and "cannot tell" when its campaign or members are missing.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+
+#include "analysis/thesis_claims.hpp"
+#include "analysis/thesis_report.hpp"
+#include "solver/io/member_file.hpp"
+#include "synthetic_campaign.hpp"
+#include "thesis_fixtures.hpp"
+
+using namespace capsule::analysis;
+using namespace capsule::analysis::testing;
+
+namespace {
+
+const ClaimResult& find_claim(const std::vector<ClaimResult>& claims, const std::string& section,
+                              const std::string& words) {
+  for (const auto& c : claims)
+    if (c.section == section && c.statement.find(words) != std::string::npos) return c;
+  FAIL("no claim " << section << " containing \"" << words << "\"");
+  return claims.front();
+}
+
+// ch3_ca, case 2d: k tau_r = f(Ca) at the given Ca, response k tau_s = 0.4, R^2 as given.
+void write_ch3_ca(const std::filesystem::path& dir, const std::vector<double>& ca, double (*k_tau_r)(double),
+                  double recovery_r2 = 0.999) {
+  nlohmann::json members = nlohmann::json::array();
+  for (double c : ca) {
+    const std::string slug = "Ca_" + std::to_string(c);
+    members.push_back(member_json(slug, "2d", {{"Ca", c}, {"E_b", 0.05}, {"V", 1.0}, {"eta", 0.0}},
+                                  {{"response", known_fit("response (85)", {{"k_tau_s", {0.4, 0.01}}})},
+                                   {"recovery", known_fit("recovery (86)", {{"k_tau_r", {k_tau_r(c), 0.01}}}, recovery_r2)}}));
+  }
+  write_fits(dir, "ch3_ca", members);
+}
+
+double proportional(double ca) { return 10.0 * ca; }
+double constant(double) { return 1.0; }
+
+// A 2D tank-treading member with E_b = 0 (Fig. 23): D_xy 0.7 while sheared until kt 5, then it
+// falls to 0.55 within 2 kt and either stays there or climbs back to 0.8 by kt 30.
+void write_no_bending_member(const std::filesystem::path& file, bool recovers) {
+  std::filesystem::create_directories(file.parent_path());
+  capsule::io::MemberWriter w(file.string());
+  w.set_scene({{"dim", 2}, {"Ca", 0.135}, {"E_b", 0.0}, {"V", 1.0}, {"eta", 0.0}});
+  for (int i = 0; i <= 600; ++i) {
+    const double t = 0.05 * i;
+    double D = 0.7;
+    if (t > 5.0) {
+      const double fall = 0.55 + 0.15 * std::exp(-(t - 5.0) / 0.4);
+      D = recovers && t > 7.0 ? 0.55 + 0.25 * (1.0 - std::exp(-(t - 7.0) / 5.0)) : fall;
+    }
+    w.append({{"kt", t}, {"D_xy", D}, {"theta", 0.3}, {"shear_on", t <= 5.0 ? 1.0 : 0.0}});
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  w.set_markers({{"t_max", nan}, {"D_max", nan}, {"t_stop", 5.0}, {"D_stop", 0.7}, {"t_min", nan}, {"D_min", nan},
+                 {"t_end", 30.0}, {"D_inf", nan}});
+  w.finish("complete");
+}
+
+void write_ch4_2d_tt(const std::filesystem::path& dir, const std::string& path) {
+  write_fits(dir, "ch4_2d_tt",
+             nlohmann::json::array({member_json("no_bending", "no_bending",
+                                                {{"Ca", 0.135}, {"E_b", 0.0}, {"V", 1.0}, {"eta", 0.0}}, {}, path)}));
+}
+
+}  // namespace
+
+TEST_CASE("Thesis claims: every claim cannot tell when no campaign has been run", "[analysis][thesis]") {
+  TempDir tmp("thesis_claims_none");
+  const auto claims = evaluate_claims(ThesisResults(tmp.path.string()));
+  REQUIRE(claims.size() >= 20);
+  for (const auto& c : claims) {
+    INFO(c.section << " " << c.statement << ": " << c.measured);
+    CHECK(c.verdict == Verdict::cannot_tell);
+    CHECK(c.measured.find("not run") != std::string::npos);
+    CHECK_FALSE(c.criterion.empty());
+    CHECK_FALSE(c.campaign.empty());
+  }
+}
+
+TEST_CASE("Thesis claims: k tau_r proportional to Ca agrees, differs, or cannot tell with too few members", "[analysis][thesis]") {
+  TempDir tmp("thesis_claims_ca");
+  const std::vector<double> ca{0.0125, 0.025, 0.05, 0.1, 0.2, 0.4};
+
+  SECTION("data that satisfy the rule agree") {
+    write_ch3_ca(tmp.path, ca, proportional);
+    const auto claims = evaluate_claims(ThesisResults(tmp.path.string()));
+    const auto& p = find_claim(claims, "3.2", "proportional to Ca (2d)");
+    CHECK(p.verdict == Verdict::agrees);
+    CHECK(p.measured.find("p = 1 ") != std::string::npos);
+    const auto& c = find_claim(claims, "3.2", "tau_r/tau_e nearly constant for Ca >= 0.1 (2d)");
+    CHECK(c.verdict == Verdict::agrees);  // k tau_r / (Ca V) = 10 at every Ca
+    // The 3d case of the same campaign has no members.
+    CHECK(find_claim(claims, "3.2", "proportional to Ca (3d)").verdict == Verdict::cannot_tell);
+    CHECK(find_claim(claims, "3.2", "proportional to Ca (3d)").measured.find("members missing") != std::string::npos);
+  }
+  SECTION("data that contradict it differ") {
+    write_ch3_ca(tmp.path, ca, constant);
+    const auto claims = evaluate_claims(ThesisResults(tmp.path.string()));
+    const auto& p = find_claim(claims, "3.2", "proportional to Ca (2d)");
+    CHECK(p.verdict == Verdict::differs);
+    CHECK(p.measured.find("p = 0 ") != std::string::npos);
+    // tau_r/tau_e = 1/Ca over Ca 0.1-0.4: spread (10 - 2.5)/5.83 = 1.29 > 0.2.
+    CHECK(find_claim(claims, "3.2", "tau_r/tau_e nearly constant for Ca >= 0.1 (2d)").verdict == Verdict::differs);
+  }
+  SECTION("too few members cannot tell") {
+    write_ch3_ca(tmp.path, {0.1, 0.2, 0.4}, proportional);
+    const auto claims = evaluate_claims(ThesisResults(tmp.path.string()));
+    const auto& p = find_claim(claims, "3.2", "proportional to Ca (2d)");
+    CHECK(p.verdict == Verdict::cannot_tell);
+    CHECK(p.measured.find("members missing") != std::string::npos);
+    CHECK(p.measured.find("3 values of Ca") != std::string::npos);
+  }
+}
+
+TEST_CASE("Thesis claims: the R^2 rule of Sec. 3.1 differs on one poor fit and needs all four campaigns to agree", "[analysis][thesis]") {
+  TempDir tmp("thesis_claims_r2");
+  const std::vector<double> ca{0.0125, 0.025, 0.05, 0.1, 0.2, 0.4};
+  SECTION("good fits, three campaigns missing") {
+    write_ch3_ca(tmp.path, ca, proportional);
+    const auto claims = evaluate_claims(ThesisResults(tmp.path.string()));
+    const auto& c = find_claim(claims, "3.1", "R^2");
+    INFO(c.measured);
+    CHECK(c.verdict == Verdict::cannot_tell);
+    CHECK(c.measured.find("campaign ch3_eb not run") != std::string::npos);
+  }
+  SECTION("a recovery fit with R^2 0.95 at E_b = 0.05") {
+    write_ch3_ca(tmp.path, ca, proportional, 0.95);
+    const auto claims = evaluate_claims(ThesisResults(tmp.path.string()));
+    const auto& c = find_claim(claims, "3.1", "R^2");
+    INFO(c.measured);
+    CHECK(c.verdict == Verdict::differs);
+    CHECK(c.measured.find("recovery R^2 0.95 (bound 0.99)") != std::string::npos);
+  }
+}
+
+TEST_CASE("Thesis claims: no recovery of biconcavity at E_b = 0, judged from the member file", "[analysis][thesis]") {
+  TempDir tmp("thesis_claims_nb");
+  const std::string rel = "members/no_bending-x/member.h5";  // relative to results/<campaign>/, as shipped
+  SECTION("stays at D_min: agrees") {
+    write_no_bending_member(tmp.path / "ch4_2d_tt" / rel, false);
+    write_ch4_2d_tt(tmp.path, rel);
+    const auto claims = evaluate_claims(ThesisResults(tmp.path.string()));
+    const auto& c = find_claim(claims, "4.1.1", "E_b = 0");
+    INFO(c.measured);
+    CHECK(c.verdict == Verdict::agrees);
+    CHECK(c.measured.find("D_min 0.55") != std::string::npos);
+  }
+  SECTION("climbs back toward 0.812: differs") {
+    write_no_bending_member(tmp.path / "ch4_2d_tt" / rel, true);
+    write_ch4_2d_tt(tmp.path, rel);
+    const auto claims = evaluate_claims(ThesisResults(tmp.path.string()));
+    const auto& c = find_claim(claims, "4.1.1", "E_b = 0");
+    INFO(c.measured);
+    CHECK(c.verdict == Verdict::differs);
+  }
+  SECTION("an absolute path from another machine is found under the campaign's members folder") {
+    write_no_bending_member(tmp.path / "ch4_2d_tt" / rel, false);
+    write_ch4_2d_tt(tmp.path, "/elsewhere/results/ch4_2d_tt/" + rel);
+    CHECK(find_claim(evaluate_claims(ThesisResults(tmp.path.string())), "4.1.1", "E_b = 0").verdict == Verdict::agrees);
+  }
+  SECTION("member file missing: cannot tell") {
+    write_ch4_2d_tt(tmp.path, rel);
+    const auto claims = evaluate_claims(ThesisResults(tmp.path.string()));
+    const auto& c = find_claim(claims, "4.1.1", "E_b = 0");
+    INFO(c.measured);
+    CHECK(c.verdict == Verdict::cannot_tell);
+    CHECK(c.measured.find("member file of no_bending missing") != std::string::npos);
+  }
+}
+
+TEST_CASE("Thesis: THESIS.md from an empty results folder says cannot tell and lists the known deviations", "[analysis][thesis]") {
+  TempDir tmp("thesis_md");
+  const auto out = tmp.path / "sub" / "THESIS.md";
+  const ThesisSummary s = write_thesis((tmp.path / "results").string(), out.string());
+  const std::string md = slurp(out);
+  CHECK(s.agrees == 0);
+  CHECK(s.differs == 0);
+  CHECK(s.cannot_tell > 20);
+  CHECK(s.coefficients_unknown == 18);
+  CHECK(md.find("## Table 2 (Sec. 5.1.1)") != std::string::npos);
+  CHECK(md.find("## Ratios b/a (Sec. 5.1.1)") != std::string::npos);
+  CHECK(md.find("## Claims of Chapters 3-5") != std::string::npos);
+  CHECK(md.find("## Known causes of disagreement") != std::string::npos);
+  for (const char* topic : {"s_eps", "conventions.E_b_2d", "conventions.sls_viscosity", "G_s = E_s/3", "Resolution"})
+    CHECK(md.find(topic) != std::string::npos);
+  CHECK(md.find("| ch5_bilinear_ca02 | not run |") != std::string::npos);
+}
