@@ -11,8 +11,11 @@
 #include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <functional>
+#include <thread>
 #include <vector>
 
+#include "study/campaign_progress.hpp"
 #include "study/capsule_binary.hpp"
 #include "study/concurrency.hpp"
 #include "study/joblog.hpp"
@@ -58,7 +61,7 @@ extern "C" void forward_sigterm(int) {
 
 // Runs argv (no shell) and waits. Ctrl-C reaches GNU Parallel through the terminal's
 // process group; study ignores it meanwhile so it can still print the summary.
-int run_and_wait(const std::vector<std::string>& argv) {
+int run_and_wait(const std::vector<std::string>& argv, const std::function<void()>& every_second) {
   std::vector<char*> args;
   for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
@@ -81,7 +84,13 @@ int run_and_wait(const std::vector<std::string>& argv) {
   }
   child_pid = pid;
   int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  // Poll, so the campaign's progress line can be redrawn while the members run.
+  for (int ticks = 0;; ++ticks) {
+    const pid_t r = ::waitpid(pid, &status, WNOHANG);
+    if (r == pid) break;
+    if (r < 0 && errno != EINTR) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    if (ticks % 10 == 9 && every_second) every_second();
   }
   child_pid = 0;
   sigaction(SIGINT, &old_int, nullptr);
@@ -96,8 +105,8 @@ int run_and_wait(const std::vector<std::string>& argv) {
 void print_status(const CampaignSurvey& survey, std::ostream& out) {
   out << "campaign " << survey.campaign.name << ": " << survey.members.size() << " members in "
       << survey.layout.root.string() << "\n";
-  for (auto state : {MemberState::complete, MemberState::fresh, MemberState::interrupted, MemberState::unstable,
-                     MemberState::stopped, MemberState::failed})
+  for (auto state : {MemberState::complete, MemberState::fresh, MemberState::running, MemberState::interrupted,
+                     MemberState::unstable, MemberState::stopped, MemberState::failed})
     out << "  " << state_name(state) << ": " << survey.count(state) << "\n";
   for (std::size_t i = 0; i < survey.members.size(); ++i) {
     const auto& c = survey.conditions[i];
@@ -155,7 +164,6 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
     // (wrapper path, member dir, threads), so no user string reaches a shell unquoted.
     std::vector<std::string> argv{"parallel", "--will-cite", "--joblog", survey.layout.joblog().string(),
                                   "--jobs", std::to_string(conc.jobs)};
-    if (request.progress_bar) argv.push_back("--bar");
     if (!request.hosts_file.empty()) {
       argv.insert(argv.end(), {"--sshloginfile", fs::absolute(request.hosts_file).string()});
       if (!request.ssh_command.empty()) argv.insert(argv.end(), {"--ssh", request.ssh_command});
@@ -168,7 +176,9 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
         << (conc.threads > 1 ? "s" : "") << ")\n"
         << std::flush;
     const auto start = std::chrono::steady_clock::now();
-    const int parallel_status = run_and_wait(argv);
+    CampaignProgress progress(survey, to_run, conc.jobs, conc.threads, request.progress_bar, out);
+    const int parallel_status = run_and_wait(argv, [&] { progress.tick(); });
+    progress.finish();
     outcome.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     outcome.ran = to_run.size();
     for (const auto& e : read_joblog(survey.layout.joblog())) outcome.member_seconds += e.runtime;
@@ -191,8 +201,8 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
   record["wall_seconds"] = outcome.wall_seconds;
   record["member_seconds"] = outcome.member_seconds;
   nlohmann::json counts;
-  for (auto state : {MemberState::complete, MemberState::fresh, MemberState::interrupted, MemberState::unstable,
-                     MemberState::stopped, MemberState::failed})
+  for (auto state : {MemberState::complete, MemberState::fresh, MemberState::running, MemberState::interrupted,
+                     MemberState::unstable, MemberState::stopped, MemberState::failed})
     counts[state_name(state)] = survey.count(state);
   record["counts"] = counts;
   write_file_atomically(survey.layout.run_json(), record.dump(2) + "\n");

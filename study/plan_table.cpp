@@ -1,9 +1,14 @@
 #include "study/plan_table.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iomanip>
 
-#include "study/cost_estimate.hpp"
+#include "solver/io/member_file.hpp"
+#include "solver/scene/memory_estimate.hpp"
+#include "study/concurrency.hpp"
+#include "study/duration_text.hpp"
 
 namespace capsule::study {
 
@@ -15,27 +20,74 @@ std::string format_number(double x) {
 }
 }  // namespace
 
+double estimated_member_seconds(const CostEstimate& cost, int dim, int threads, const MeasuredSpeed& speed) {
+  return cost.expected_seconds(threads) * speed.for_dim(dim).factor;
+}
+
+CampaignEstimate estimate_campaign(const CampaignSurvey& survey, const MeasuredSpeed& speed, int cores) {
+  CampaignEstimate e;
+  bool any_3d = false;
+  for (std::size_t i = 0; i < survey.members.size(); ++i)
+    if (needs_run(survey.conditions[i], false)) {
+      ++e.pending;
+      any_3d = any_3d || survey.members[i].scene.at("dim").get<int>() == 3;
+    }
+  if (e.pending == 0) return e;
+  const Concurrency conc = choose_concurrency(cores, static_cast<int>(e.pending), any_3d, 0, 0);
+  e.jobs = conc.jobs;
+  e.threads = conc.threads;
+  double longest = 0;
+  for (std::size_t i = 0; i < survey.members.size(); ++i) {
+    if (!needs_run(survey.conditions[i], false)) continue;
+    const Member& m = survey.members[i];
+    const double s = estimated_member_seconds(estimate_cost(m.scene), m.scene.at("dim").get<int>(), e.threads, speed);
+    e.member_seconds += s;
+    longest = std::max(longest, s);
+  }
+  // Members side by side: the sum spread over the jobs, and never less than the longest one.
+  e.wall_seconds = std::max(longest, e.member_seconds / e.jobs);
+  return e;
+}
+
 void print_plan(const CampaignSurvey& survey, std::ostream& out) {
+  const MeasuredSpeed speed = measure_speed(survey);
+  const CampaignEstimate campaign = estimate_campaign(survey, speed, usable_cores());
   out << "campaign " << survey.campaign.name;
   if (!survey.campaign.description.empty()) out << ": " << survey.campaign.description;
   out << "\nresults: " << survey.layout.root.string() << "\n";
   out << std::left << std::setw(5) << "#" << std::setw(12) << "state" << std::setw(4) << "dim" << std::setw(12)
-      << "nodes" << std::setw(14) << "kt" << std::setw(14) << "node-steps"
+      << "nodes" << std::setw(14) << "kt" << std::setw(12) << "node-steps" << std::setw(10) << "seconds"
+      << std::setw(10) << "memory"
       << "member (parameters)\n";
   double total_node_steps = 0;
   double total_node_kt = 0;
+  double peak_memory = 0;
   for (std::size_t i = 0; i < survey.members.size(); ++i) {
     const Member& m = survey.members[i];
+    const int dim = m.scene.at("dim").get<int>();
     const CostEstimate c = estimate_cost(m.scene);
     const bool pending = survey.conditions[i].state != MemberState::complete;
     const std::string node_steps = format_number(c.node_steps());
     if (pending) total_node_steps += c.node_steps();
     if (pending) total_node_kt += static_cast<double>(c.nodes) * c.kt_span;
+    if (pending) peak_memory = std::max(peak_memory, c.memory_bytes);
+    // Seconds: what the member took when it has run, else the estimate ("~").
+    std::string seconds;
+    io::MemberStatus measured;
+    if (!pending) {
+      try {
+        measured = io::read_member_status(survey.layout.member(m).h5.string());
+      } catch (const std::exception&) {
+      }
+    }
+    if (!pending && std::isfinite(measured.wall_seconds)) seconds = format_number(measured.wall_seconds);
+    else seconds = "~" + format_number(estimated_member_seconds(c, dim, pending ? campaign.threads : 1, speed));
     std::string params;
     for (const auto& [key, value] : m.parameters) params += (params.empty() ? "" : ", ") + key + "=" + value.dump();
     out << std::left << std::setw(5) << i << std::setw(12) << state_name(survey.conditions[i].state) << std::setw(4)
-        << m.scene.at("dim").get<int>() << std::setw(12) << c.nodes << std::setw(14)
-        << ((c.kt_is_bound ? "<=" : "") + format_number(c.kt_span)) << std::setw(14) << node_steps << m.dir_name();
+        << dim << std::setw(12) << c.nodes << std::setw(14)
+        << ((c.kt_is_bound ? "<=" : "") + format_number(c.kt_span)) << std::setw(12) << node_steps << std::setw(10)
+        << seconds << std::setw(10) << format_bytes(c.memory_bytes) << m.dir_name();
     std::string cases = m.case_name;
     for (const auto& other : m.other_cases) cases += ", " + other;
     if (!cases.empty() || !params.empty())
@@ -44,12 +96,26 @@ void print_plan(const CampaignSurvey& survey, std::ostream& out) {
     out << "\n";
   }
   out << survey.members.size() << " members: " << survey.count(MemberState::complete) << " complete, "
-      << survey.count(MemberState::fresh) << " new, " << survey.count(MemberState::interrupted) << " interrupted, "
-      << survey.count(MemberState::failed) << " failed, " << survey.count(MemberState::unstable) << " unstable, "
-      << survey.count(MemberState::stopped) << " stopped\n";
+      << survey.count(MemberState::fresh) << " new, " << survey.count(MemberState::running) << " running, "
+      << survey.count(MemberState::interrupted) << " interrupted, " << survey.count(MemberState::failed) << " failed, "
+      << survey.count(MemberState::unstable) << " unstable, " << survey.count(MemberState::stopped) << " stopped\n";
   out << "cost of what is not complete: " << format_number(total_node_kt) << " node-kt";
   if (total_node_steps > 0) out << ", " << format_number(total_node_steps) << " node-steps";
   out << "\n";
+  if (campaign.pending > 0) {
+    out << "estimated wall time: " << format_duration(campaign.wall_seconds) << " (" << format_number(campaign.wall_seconds)
+        << " s) for " << campaign.pending << " members, " << campaign.jobs << " at once x " << campaign.threads
+        << " thread" << (campaign.threads > 1 ? "s" : "") << "; largest member needs " << format_bytes(peak_memory)
+        << " of memory (this machine has " << format_bytes(physical_memory_bytes()) << ")\n";
+    for (int dim : {2, 3}) {
+      const SpeedCalibration& k = speed.for_dim(dim);
+      if (k.members > 0)
+        out << "  " << dim << "D cost model corrected by x" << format_number(k.factor) << " from the measured speed of "
+            << k.members << " member" << (k.members > 1 ? "s" : "") << " that ran\n";
+    }
+    out << "  (seconds: '~' estimated from the cost model, README \"Time and memory estimates\"; a phase that ends on a\n"
+           "   condition counts at its expected end, a theta/beta stop at its cap)\n";
+  }
 }
 
 }  // namespace capsule::study
