@@ -48,10 +48,18 @@ std::string this_host() {
   return name;
 }
 
+// A zombie is dead: a killed capsule whose parent died too may stay one for good where PID 1
+// does not reap (containers), and kill(pid, 0) still succeeds on it.
 bool process_alive(long pid) {
   if (pid <= 0) return false;
-  if (::kill(static_cast<pid_t>(pid), 0) == 0) return true;
-  return errno == EPERM;  // alive, owned by someone else
+  if (::kill(static_cast<pid_t>(pid), 0) != 0 && errno != EPERM) return false;
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  if (!std::getline(stat, line)) return true;  // no /proc: trust kill()
+  const auto close = line.rfind(')');
+  if (close == std::string::npos || close + 2 >= line.size()) return true;
+  const char state = line[close + 2];
+  return state != 'Z' && state != 'X';
 }
 
 double age_seconds(const fs::path& file) {
@@ -120,7 +128,7 @@ MemberCondition inspect_member(const MemberPaths& paths, const std::string& expe
     if (live) {
       c.state = MemberState::running;
       std::ostringstream s;
-      if (c.progress.present) {
+      if (c.progress.present && c.progress.phase != "starting") {
         s << c.progress.phase << ", kt " << c.progress.kt << " of " << (c.progress.member_end_is_cap ? "<= " : "")
           << c.progress.member_end_kt;
         if (c.progress.eta_member_seconds >= 0)

@@ -35,6 +35,37 @@ std::string host() {
 }
 }  // namespace
 
+namespace {
+void write_json_atomically(const std::string& file, const nlohmann::json& j) {
+  const std::string tmp = file + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::trunc);
+    out << j.dump() << "\n";
+    if (!out) return;  // progress is best effort: a full disk must not end the member
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, file, ec);
+}
+}  // namespace
+
+void write_starting_progress(const std::string& file) {
+  write_json_atomically(file, {{"pid", static_cast<long>(::getpid())},
+                               {"host", host()},
+                               {"updated", static_cast<double>(std::time(nullptr))},
+                               {"phase", "starting"},
+                               {"kt", 0.0},
+                               {"steps", 0},
+                               {"D_xy", nullptr},
+                               {"steps_per_second", 0.0},
+                               {"mlups", 0.0},
+                               {"phase_end_kt", 0.0},
+                               {"phase_end_is_cap", false},
+                               {"member_end_kt", 0.0},
+                               {"member_end_is_cap", false},
+                               {"eta_phase_seconds", nullptr},
+                               {"eta_member_seconds", nullptr}});
+}
+
 ProgressReporter::ProgressReporter(bool print, double interval, std::string file, double nodes, double steps_per_kt)
     : print_(print), interval_(interval), file_(std::move(file)), nodes_(nodes), steps_per_kt_(steps_per_kt),
       window_start_(steady_seconds()), last_report_(window_start_) {}
@@ -90,14 +121,7 @@ void ProgressReporter::write_file(long step, double kt, const Protocol& protocol
                       {"member_end_is_cap", o.member_end_is_cap},
                       {"eta_phase_seconds", std::isfinite(eta_phase) ? nlohmann::json(eta_phase) : nlohmann::json()},
                       {"eta_member_seconds", std::isfinite(eta_member) ? nlohmann::json(eta_member) : nlohmann::json()}};
-  const std::string tmp = file_ + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::trunc);
-    out << j.dump() << "\n";
-    if (!out) return;  // progress is best effort: a full disk must not end the member
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, file_, ec);
+  write_json_atomically(file_, j);
 }
 
 }  // namespace capsule

@@ -13,6 +13,10 @@ namespace capsule {
 
 std::string progress_path_for(const std::string& member_path);  // <member>.progress
 
+// The first progress file, before the member file's .partial exists: names this process, so
+// `study` never takes a starting member for a dead one (or a dead one for a starting one).
+void write_starting_progress(const std::string& file);
+
 // "2h05m", "5m12s", "42s".
 std::string format_duration(double seconds);
 

@@ -87,6 +87,7 @@ int run_member(const RunOptions& options) {
       out.set_attribute("dim", static_cast<long>(scene.dim));
       out.set_attribute("threads", threads);
       out.set_attribute("restarts", restarts);
+      write_starting_progress(progress_path_for(options.output_path));
       out.checkpoint();  // a .partial exists from the start
 
       RunControl control;
