@@ -115,15 +115,17 @@ int run_member(const RunOptions& options) {
     };
     std::unique_ptr<io::MemberWriter> out = std::make_unique<io::MemberWriter>(options.output_path);
     try {
-      attempt(*out);
-    } catch (const RestartRefused& e) {
-      std::cerr << "capsule: restart point " << restart_path << " refused: " << e.what() << "; starting afresh\n";
-      std::error_code ec;
-      std::filesystem::remove(restart_path, ec);
-      resume.reset();
-      wall_before = 0, restarts = 0, started = utc_now();
-      out = std::make_unique<io::MemberWriter>(options.output_path);
-      attempt(*out);
+      try {
+        attempt(*out);
+      } catch (const RestartRefused& e) {
+        std::cerr << "capsule: restart point " << restart_path << " refused: " << e.what() << "; starting afresh\n";
+        std::error_code ec;
+        std::filesystem::remove(restart_path, ec);
+        resume.reset();
+        wall_before = 0, restarts = 0, started = utc_now();
+        out = std::make_unique<io::MemberWriter>(options.output_path);
+        attempt(*out);
+      }
     } catch (const SimulatedKill& k) {
       std::cerr << "capsule: stopped at step " << k.step
                 << " as asked (--stop-after-step); the .partial and the restart point are kept\n";

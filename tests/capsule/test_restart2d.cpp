@@ -3,6 +3,7 @@
 // bitwise those of an uninterrupted run; restart points of another run are refused.
 #include <catch2/catch.hpp>
 
+#include "solver/io/state_archive.hpp"
 #include "tests/capsule/member_compare.hpp"
 
 using namespace capsule;
@@ -62,6 +63,19 @@ TEST_CASE("a restart point of another scene, another member id or a damaged one 
     INFO(r.output);
     REQUIRE(r.exit_code == 0);
     CHECK(r.output.find("refused: member id \"aaaa\"") != std::string::npos);
+    require_bitwise_equal(b_whole, io::read_member(out.string()));
+  }
+  SECTION("a restart point whose saved reference shape differs from the rebuilt one") {
+    REQUIRE(run_capsule(b, out, "--checkpoint-at-step 500 --stop-after-step 600").exit_code == 1);
+    io::StateArchive saved = io::StateArchive::read(restart.string());
+    std::vector<double> l0 = saved.doubles("membrane.reference_lengths");
+    l0[0] *= 1.0 + 1e-15;
+    saved.put("membrane.reference_lengths", l0);
+    saved.write(restart.string());
+    const auto r = run_capsule(b, out);
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.output.find("refused: restart point: the membrane's reference lengths differs") != std::string::npos);
     require_bitwise_equal(b_whole, io::read_member(out.string()));
   }
   SECTION("a damaged file") {
