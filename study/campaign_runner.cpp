@@ -12,8 +12,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include <functional>
+#include <thread>
 #include <vector>
 
+#include "study/campaign_progress.hpp"
 #include "study/capsule_binary.hpp"
 #include "study/concurrency.hpp"
 #include "study/exit_status.hpp"
@@ -39,7 +41,8 @@ extern "C" void forward_sigterm(int) {
 
 // Runs argv (no shell) and waits. Ctrl-C reaches GNU Parallel through the terminal's
 // process group; study ignores it meanwhile so it can still print the summary.
-int run_and_wait(const std::vector<std::string>& argv, const std::function<void(long)>& started) {
+int run_and_wait(const std::vector<std::string>& argv, const std::function<void(long)>& started,
+                 const std::function<void()>& every_second) {
   std::vector<char*> args;
   for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
@@ -63,7 +66,13 @@ int run_and_wait(const std::vector<std::string>& argv, const std::function<void(
   child_pid = pid;
   started(static_cast<long>(pid));
   int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  // Poll, so the campaign's progress line can be redrawn while the members run.
+  for (int ticks = 0;; ++ticks) {
+    const pid_t r = ::waitpid(pid, &status, WNOHANG);
+    if (r == pid) break;
+    if (r < 0 && errno != EINTR) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    if (ticks % 10 == 9 && every_second) every_second();
   }
   child_pid = 0;
   sigaction(SIGINT, &old_int, nullptr);
@@ -78,8 +87,8 @@ int run_and_wait(const std::vector<std::string>& argv, const std::function<void(
 void print_status(const CampaignSurvey& survey, std::ostream& out) {
   out << "campaign " << survey.campaign.name << ": " << survey.members.size() << " members in "
       << survey.layout.root.string() << "\n";
-  for (auto state : {MemberState::complete, MemberState::fresh, MemberState::interrupted, MemberState::unstable,
-                     MemberState::stopped, MemberState::failed})
+  for (auto state : {MemberState::complete, MemberState::fresh, MemberState::running, MemberState::interrupted,
+                     MemberState::unstable, MemberState::stopped, MemberState::failed})
     out << "  " << state_name(state) << ": " << survey.count(state) << "\n";
   for (std::size_t i = 0; i < survey.members.size(); ++i) {
     const auto& c = survey.conditions[i];
@@ -152,7 +161,6 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
     std::string joblog = "+";  // append(): GCC 12 -O3 reports a false -Wrestrict on "literal" + string
     joblog.append(survey.layout.joblog().string());
     std::vector<std::string> argv{"parallel", "--will-cite", "--joblog", joblog, "--jobs", std::to_string(conc.jobs)};
-    if (request.progress_bar) argv.push_back("--bar");
     if (!request.hosts_file.empty()) {
       argv.insert(argv.end(), {"--sshloginfile", fs::absolute(request.hosts_file).string()});
       if (!request.ssh_command.empty()) argv.insert(argv.end(), {"--ssh", request.ssh_command});
@@ -167,7 +175,9 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
     const double start_epoch =
         std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
     const auto start = std::chrono::steady_clock::now();
-    const int parallel_status = run_and_wait(argv, [&lock](long pid) { lock.record(pid); });
+    CampaignProgress progress(survey, to_run, conc.jobs, conc.threads, request.progress_bar, out);
+    const int parallel_status = run_and_wait(argv, [&lock](long pid) { lock.record(pid); }, [&] { progress.tick(); });
+    progress.finish();
     outcome.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     outcome.ran = to_run.size();
     for (const auto& e : read_joblog(survey.layout.joblog()))
@@ -191,8 +201,8 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
   record["wall_seconds"] = outcome.wall_seconds;
   record["member_seconds"] = outcome.member_seconds;
   nlohmann::json counts;
-  for (auto state : {MemberState::complete, MemberState::fresh, MemberState::interrupted, MemberState::unstable,
-                     MemberState::stopped, MemberState::failed})
+  for (auto state : {MemberState::complete, MemberState::fresh, MemberState::running, MemberState::interrupted,
+                     MemberState::unstable, MemberState::stopped, MemberState::failed})
     counts[state_name(state)] = survey.count(state);
   record["counts"] = counts;
   record["exit_status"] = outcome.exit_code;

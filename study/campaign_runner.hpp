@@ -2,7 +2,8 @@
 // `study run`: prepares member directories, hands every member that is not complete to
 // GNU Parallel (one job per member directory, from a generated job file), waits, and
 // summarises from the members' own files. Resumable: rerun it after an interruption and
-// only incomplete members run again, from scratch.
+// only incomplete members run again, each from its last restart point (README "Checkpoints").
+// While they run, one line shows done / running / left and an ETA (campaign_progress.hpp).
 #include <filesystem>
 #include <ostream>
 #include <string>
@@ -20,7 +21,7 @@ struct RunRequest {
   std::string ssh_command;       // GNU Parallel --ssh (default: ssh)
   bool rerun_unstable = false;   // also rerun members whose file says unstable
   bool rerun_stopped = false;    // also rerun members whose file says stopped (a configuration the solver refused)
-  bool progress_bar = false;     // --bar (the app sets it when stdout is a terminal)
+  bool progress_bar = false;     // redraw the campaign's progress line in place (the app sets it on a terminal)
 };
 
 struct RunOutcome {

@@ -47,7 +47,7 @@ void prepare_member_directories(const CampaignSurvey& survey) {
 }
 
 void clear_for_rerun(const MemberPaths& paths) {
-  for (const auto& p : {paths.h5, paths.partial, paths.exit_status, paths.log}) fs::remove(p);
+  for (const auto& p : {paths.h5, paths.partial, paths.exit_status}) fs::remove(p);
 }
 
 }  // namespace capsule::study

@@ -27,7 +27,8 @@ CampaignSurvey survey_campaign(const std::string& campaign_file, const std::file
 // and records the campaign file as run (campaign.json).
 void prepare_member_directories(const CampaignSurvey& survey);
 
-// Clears what a rerun replaces: member.h5 (if not complete), .partial, exit_status, capsule.log.
+// Clears what a rerun replaces: member.h5 (if not complete), .partial, exit_status. The log is
+// kept (the rerun appends to it) and so is member.h5.restart, from which the rerun continues.
 void clear_for_rerun(const MemberPaths& paths);
 
 }  // namespace capsule::study

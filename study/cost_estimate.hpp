@@ -1,6 +1,16 @@
 #pragma once
-// A member's cost before it runs: lattice nodes x time steps, from its scene alone.
+// A member's cost before it runs (README "Time and memory estimates"): lattice nodes, time
+// steps, and wall seconds on this kind of machine from a cost model calibrated by measurement:
+//   seconds = steps x (fluid nodes / fluid rate + membrane cost per step) / threads (fluid only)
+// with the fluid rate in lattice updates per second for the lattice (D2Q9 in or out of cache,
+// D3Q19), the membrane cost per vertex (3D) or segment (2D) and term (elasticity, SLS, bending
+// curvature fit, IB coupling by kernel width, viscosity contrast, power law), and the number
+// of steps from the protocol: a set duration exactly, a phase that ends on a condition at its
+// expected time (steady shear: window + 1.6 kt; settled recovery: window + 2.6 kt, the
+// measured ends of the default members), a theta or beta stop at its cap.
+// After members have run, calibrate() corrects the model by their measured speed.
 #include <nlohmann/json.hpp>
+#include <vector>
 
 namespace capsule::study {
 
@@ -8,12 +18,31 @@ struct CostEstimate {
   long long nodes = 0;        // lattice nodes nx * ny * nz
   double kt_span = 0;         // shear + recovery time, kt; an upper bound when a phase ends on a condition (max_kt)
   bool kt_is_bound = false;   // true when kt_span is a max_kt cap rather than the set duration
+  double expected_kt = 0;     // the expected length (equal to kt_span for set durations)
   double steps_per_kt = 0;    // 1/k from Re, a and the tau the solver runs (choose_tau)
+  double fluid_seconds_per_step = 0;     // one thread
+  double membrane_seconds_per_step = 0;  // membrane forces, IB coupling, viscosity fields
+  double memory_bytes = 0;    // the solver's estimate (solver/scene/memory_estimate.hpp)
   double steps() const { return kt_span * steps_per_kt; }
+  double expected_steps() const { return expected_kt * steps_per_kt; }
   double node_steps() const { return static_cast<double>(nodes) * steps(); }
+  // Model seconds for a number of steps with this many OpenMP threads.
+  double seconds_for_steps(double steps, int threads) const;
+  double expected_seconds(int threads) const { return seconds_for_steps(expected_steps(), threads); }
 };
 
 // From a complete canonical scene (Scene::to_json). Throws SceneError on an invalid scene.
 CostEstimate estimate_cost(const nlohmann::json& canonical_scene);
+
+// Measured speed of finished members against the model: factor = sum of measured wall
+// seconds / sum of model seconds for the steps they took (1 with no measurement).
+struct SpeedCalibration {
+  double factor = 1.0;
+  int members = 0;
+  void add(const CostEstimate& c, double steps, int threads, double wall_seconds);
+
+ private:
+  double measured_ = 0, model_ = 0;
+};
 
 }  // namespace capsule::study

@@ -1,10 +1,20 @@
 #include "study/member_state.hpp"
 
+#include <signal.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <vector>
 
 #include "solver/io/member_file.hpp"
+#include "study/duration_text.hpp"
 
 namespace capsule::study {
 
@@ -32,12 +42,40 @@ std::string exit_meaning(int code) {
   }
 }
 
+std::string this_host() {
+  char name[256] = {};
+  if (::gethostname(name, sizeof name - 1) != 0) return "unknown";
+  return name;
+}
+
+// A zombie is dead: a killed capsule whose parent died too may stay one for good where PID 1
+// does not reap (containers), and kill(pid, 0) still succeeds on it.
+bool process_alive(long pid) {
+  if (pid <= 0) return false;
+  if (::kill(static_cast<pid_t>(pid), 0) != 0 && errno != EPERM) return false;
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  if (!std::getline(stat, line)) return true;  // no /proc: trust kill()
+  const auto close = line.rfind(')');
+  if (close == std::string::npos || close + 2 >= line.size()) return true;
+  const char state = line[close + 2];
+  return state != 'Z' && state != 'X';
+}
+
+double age_seconds(const fs::path& file) {
+  std::error_code ec;
+  const auto t = fs::last_write_time(file, ec);
+  if (ec) return 1e300;
+  return std::chrono::duration<double>(fs::file_time_type::clock::now() - t).count();
+}
+
 }  // namespace
 
 const char* state_name(MemberState state) {
   switch (state) {
     case MemberState::fresh: return "new";
     case MemberState::interrupted: return "interrupted";
+    case MemberState::running: return "running";
     case MemberState::complete: return "complete";
     case MemberState::unstable: return "unstable";
     case MemberState::stopped: return "stopped";
@@ -74,13 +112,74 @@ MemberCondition inspect_member(const MemberPaths& paths, const std::string& expe
     }
     return {MemberState::failed, "capsule exited 0 but wrote no member file"};
   }
-  if (fs::exists(paths.partial, ec)) return {MemberState::interrupted, "killed while running (only member.h5.partial)"};
+  if (fs::exists(paths.partial, ec) || fs::exists(paths.restart, ec)) {
+    MemberCondition c;
+    c.progress = read_progress(paths.progress);
+    // Live: a progress file naming a live process on this host; on another host (or before the
+    // first progress line) files written within kStaleSeconds.
+    bool live = false;
+    if (c.progress.present && c.progress.host == this_host()) {
+      live = process_alive(c.progress.pid);
+    } else {
+      double age = c.progress.present ? c.progress.age_seconds : 1e300;
+      if (fs::exists(paths.partial, ec)) age = std::min(age, age_seconds(paths.partial));
+      live = age < kStaleSeconds;
+    }
+    if (live) {
+      c.state = MemberState::running;
+      std::ostringstream s;
+      if (c.progress.present && c.progress.phase != "starting") {
+        s << c.progress.phase << ", kt " << c.progress.kt << " of " << (c.progress.member_end_is_cap ? "<= " : "")
+          << c.progress.member_end_kt;
+        if (c.progress.eta_member_seconds >= 0)
+          s << ", ETA " << (c.progress.member_end_is_cap ? "<= " : "") << format_duration(c.progress.eta_member_seconds);
+      } else {
+        s << "starting";
+      }
+      c.reason = s.str();
+    } else {
+      c.state = MemberState::interrupted;
+      c.reason = fs::exists(paths.restart, ec)
+                     ? "killed while running; `study run` continues it from its restart point"
+                     : "killed while running (only member.h5.partial)";
+      if (c.progress.present) {
+        std::ostringstream s;
+        s << " at kt " << c.progress.kt;
+        c.reason += s.str();
+      }
+    }
+    return c;
+  }
   return {MemberState::fresh, ""};
+}
+
+MemberProgress read_progress(const fs::path& file) {
+  MemberProgress p;
+  std::error_code ec;
+  if (!fs::exists(file, ec)) return p;
+  try {
+    std::ifstream in(file);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    p.pid = j.at("pid").get<long>();
+    p.host = j.at("host").get<std::string>();
+    p.phase = j.at("phase").get<std::string>();
+    p.kt = j.at("kt").get<double>();
+    p.member_end_kt = j.at("member_end_kt").get<double>();
+    p.member_end_is_cap = j.at("member_end_is_cap").get<bool>();
+    p.steps_per_second = j.at("steps_per_second").get<double>();
+    if (j.at("eta_member_seconds").is_number()) p.eta_member_seconds = j.at("eta_member_seconds").get<double>();
+    p.age_seconds = age_seconds(file);
+    p.present = true;
+  } catch (const std::exception&) {
+    p = {};  // a file being replaced or damaged: as if absent
+  }
+  return p;
 }
 
 bool needs_run(const MemberCondition& condition, bool rerun_unstable, bool rerun_stopped) {
   switch (condition.state) {
     case MemberState::complete: return false;
+    case MemberState::running: return false;  // a live capsule (another run, a Slurm task) owns it
     case MemberState::unstable: return rerun_unstable;
     case MemberState::stopped: return rerun_stopped;
     default: return true;

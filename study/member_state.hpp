@@ -2,6 +2,7 @@
 // What a member's own files say about it. Completion is decided here, per member, from
 // its member file (status "complete" and the expected member_id) -- never from GNU
 // Parallel's joblog.
+#include <filesystem>
 #include <string>
 
 #include "study/results_layout.hpp"
@@ -11,16 +12,36 @@ namespace capsule::study {
 enum class MemberState {
   fresh,        // nothing run yet
   interrupted,  // only member.h5.partial: killed while running
+  running,      // member.h5.partial of a live capsule (its progress file names a live pid, or is fresh)
   complete,     // member.h5 with status "complete" and this member's id
   unstable,     // member.h5 with status "unstable at kt = X: reason"
   stopped,      // member.h5 with status "stopped: reason" (the solver threw; capsule exit 1)
   failed,       // the capsule exited non-zero without a member file, or the file is unreadable / foreign
 };
 
-struct MemberCondition {
-  MemberState state = MemberState::fresh;
-  std::string reason;  // for unstable / stopped / failed / interrupted
+// What a running capsule last said about itself (member.h5.progress, solver/run/progress.hpp).
+struct MemberProgress {
+  bool present = false;
+  long pid = 0;
+  std::string host, phase;
+  double kt = 0, member_end_kt = 0, steps_per_second = 0;
+  double eta_member_seconds = -1;  // < 0: unknown
+  bool member_end_is_cap = false;
+  double age_seconds = 0;          // since the file was written
 };
+MemberProgress read_progress(const std::filesystem::path& progress_file);
+
+struct MemberCondition {
+  MemberCondition() = default;
+  MemberCondition(MemberState s, std::string why) : state(s), reason(std::move(why)) {}
+  MemberState state = MemberState::fresh;
+  std::string reason;  // for unstable / stopped / failed / interrupted / running
+  MemberProgress progress;  // for running (and interrupted members that left one)
+};
+
+// A member whose files have not changed for this long is not taken for running unless its
+// progress file names a live process on this host.
+inline constexpr double kStaleSeconds = 90;
 
 const char* state_name(MemberState state);  // "new", "interrupted", "complete", ...
 

@@ -17,8 +17,10 @@ std::string member_wrapper_text(const fs::path& capsule_binary, const std::strin
          "capsule=" + shell_quote(capsule_binary.string()) + "\n"
          "id=${dir##*-}\n"
          "rm -f \"$dir/exit_status\" \"$dir/member.h5.partial\"\n"
-         "\"$capsule\" \"$dir/scene.json\" -o \"$dir/member.h5\" --id \"$id\" --threads \"$threads\" --quiet "
-         ">\"$dir/capsule.log\" 2>&1\n"
+         "# Progress lines (and restart-point notes) go to the log, appended across reruns; a rerun\n"
+         "# continues from member.h5.restart when the capsule left one.\n"
+         "\"$capsule\" \"$dir/scene.json\" -o \"$dir/member.h5\" --id \"$id\" --threads \"$threads\" "
+         "--progress-seconds 10 >>\"$dir/capsule.log\" 2>&1\n"
          "status=$?\n"
          "echo \"$status\" >\"$dir/exit_status\"\n"
          "exit \"$status\"\n";

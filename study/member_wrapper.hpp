@@ -1,9 +1,10 @@
 #pragma once
 // The generated script GNU Parallel (or a Slurm task) runs for one member:
 //   run_member.sh MEMBER_DIR THREADS
-// It runs `capsule MEMBER_DIR/scene.json -o MEMBER_DIR/member.h5 --id ID --threads THREADS --quiet`
-// (ID = the 16 hex digits after the directory name's last '-'), keeps the capsule's
-// output in MEMBER_DIR/capsule.log and its exit status in MEMBER_DIR/exit_status.
+// It runs `capsule MEMBER_DIR/scene.json -o MEMBER_DIR/member.h5 --id ID --threads THREADS`
+// (ID = the 16 hex digits after the directory name's last '-'), appends the capsule's
+// progress lines and messages to MEMBER_DIR/capsule.log and keeps its exit status in
+// MEMBER_DIR/exit_status. A member killed earlier continues from its restart point.
 // Arguments arrive as positional parameters and are always quoted: nothing is interpolated.
 #include <filesystem>
 #include <string>

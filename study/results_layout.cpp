@@ -19,6 +19,8 @@ MemberPaths ResultsLayout::member(const Member& m) const {
   p.partial = p.dir / "member.h5.partial";
   p.log = p.dir / "capsule.log";
   p.exit_status = p.dir / "exit_status";
+  p.restart = p.dir / "member.h5.restart";
+  p.progress = p.dir / "member.h5.progress";
   return p;
 }
 

@@ -9,6 +9,7 @@
 //   <results>/<campaign>/jobs               the job list handed to GNU Parallel (member dirs)
 //   <results>/<campaign>/run_member.sh      the generated wrapper that runs one member
 //   <results>/<campaign>/members/<slug>-<id>/{scene.json, member.h5, capsule.log, exit_status}
+//       and while a member runs: member.h5.partial, member.h5.restart, member.h5.progress
 //   <results>/<campaign>/slurm/             `study export --slurm` output
 //   <results>/<campaign>/report/            `study report` output
 #include <filesystem>
@@ -20,6 +21,8 @@ namespace capsule::study {
 
 struct MemberPaths {
   std::filesystem::path dir, scene, h5, partial, log, exit_status;
+  std::filesystem::path restart;   // member.h5.restart: the capsule's last restart point
+  std::filesystem::path progress;  // member.h5.progress: the running capsule's progress (JSON)
 };
 
 struct ResultsLayout {

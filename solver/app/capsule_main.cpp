@@ -5,6 +5,7 @@
 
 #include "solver/app/cli_support.hpp"
 #include "solver/lbm/bench.hpp"
+#include "solver/scene/memory_estimate.hpp"
 #include "solver/run/run_member.hpp"
 #include "solver/scene/scene.hpp"
 
@@ -25,7 +26,14 @@ int main(int argc, char** argv) {
     if (const int code = capsule::cli::parse_or_exit_code(app, argc - 1, argv + 1); code >= 0) return code;
     try {
       auto s = capsule::Scene::load(scene);
+      // The canonical scene on stdout (study hashes it); the memory it needs on stderr.
+      if (const std::string refusal = capsule::memory_refusal(s); !refusal.empty()) {
+        std::cerr << "capsule: " << scene << ": " << refusal << "\n";
+        return 2;
+      }
       std::cout << s.to_json().dump(2) << "\n";
+      std::cerr << "capsule: " << capsule::describe_memory(capsule::estimate_memory(s)) << "; this machine has "
+                << capsule::format_bytes(capsule::physical_memory_bytes()) << "\n";
       return 0;
     } catch (const std::exception& e) {
       std::cerr << "capsule: " << e.what() << "\n";
@@ -57,6 +65,14 @@ int main(int argc, char** argv) {
       ->check(capsule::cli::whole_number_at_least(0));
   app.add_option("--id", opt.member_id, "member id to record (set by study)");
   app.add_flag("-q,--quiet", opt.quiet, "no progress lines");
+  app.add_option("--progress-seconds", opt.progress_seconds, "wall seconds between progress lines")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--checkpoint-seconds", opt.checkpoint.every_seconds,
+                 "wall seconds between restart points (OUT.restart; 0 = none); rerunning the same command continues from the last one")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
+  // Hidden test options: a restart point at a given step, and an end as if killed.
+  app.add_option("--checkpoint-at-step", opt.checkpoint.at_step)->group("")->check(CLI::NonNegativeNumber);
+  app.add_option("--stop-after-step", opt.checkpoint.stop_after_step)->group("")->check(CLI::NonNegativeNumber);
   if (const int code = capsule::cli::parse_or_exit_code(app, argc, argv); code >= 0) return code;
   return capsule::run_member(opt);
 }

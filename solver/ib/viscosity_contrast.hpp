@@ -22,6 +22,7 @@
 #include <cstddef>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 #include <vector>
 
 #include "solver/ib/grid.hpp"
@@ -115,6 +116,21 @@ class ViscosityContrast {
   // Signed normal distance of a band node (meaningful only where in_band()).
   double signed_distance(std::size_t node) const { return signed_[node]; }
   const std::vector<std::size_t>& band_nodes() const { return band_nodes_; }
+
+  // Restart points: what the next update() reads besides the membrane -- the inside flag of
+  // every node, the current band (reset by the next update) and whether the flood fill ran.
+  const std::vector<char>& inside_flags() const { return inside_; }
+  bool initialised() const { return initialised_; }
+  void restore(const std::vector<char>& inside, const std::vector<std::size_t>& band, bool initialised) {
+    if (inside.size() != grid_.size()) throw std::invalid_argument("ViscosityContrast::restore: wrong grid size");
+    inside_ = inside;
+    std::fill(in_band_.begin(), in_band_.end(), 0);
+    std::fill(dist2_.begin(), dist2_.end(), std::numeric_limits<double>::infinity());
+    band_nodes_ = band;
+    previous_band_.clear();
+    for (std::size_t node : band_nodes_) in_band_.at(node) = 1;
+    initialised_ = initialised;
+  }
 
  private:
   // Non-band nodes connected to the walls (y = 0 and y = ny rows) are outside; the

@@ -173,6 +173,67 @@ void MemberWriter::finish(const std::string& status) {
   std::filesystem::rename(partial_path(), final_path_);
 }
 
+void MemberWriter::save_rows(StateArchive& a) const {
+  std::string columns;
+  for (const auto& c : columns_) columns += c + "\n";
+  a.put_text("member.columns", columns);
+  a.put_integer("member.rows", static_cast<std::int64_t>(rows_));
+  for (const auto& c : columns_) a.put("member.series." + c, series_.at(c));
+  std::vector<double> beta;
+  for (const auto& r : beta_) beta.insert(beta.end(), r.begin(), r.end());
+  a.put("member.beta", std::move(beta));
+  a.put_integer("member.beta_rows", static_cast<std::int64_t>(beta_.size()));
+  std::vector<double> kt, xyz;
+  std::vector<std::int64_t> dims, sizes;
+  for (const auto& s : shapes_) {
+    kt.push_back(s.kt);
+    dims.push_back(s.dim);
+    sizes.push_back(static_cast<std::int64_t>(s.xyz.size()));
+    xyz.insert(xyz.end(), s.xyz.begin(), s.xyz.end());
+  }
+  a.put("member.shapes.kt", std::move(kt));
+  a.put("member.shapes.dim", std::move(dims));
+  a.put("member.shapes.size", std::move(sizes));
+  a.put("member.shapes.xyz", std::move(xyz));
+  a.put("member.triangles", std::vector<std::int64_t>(triangles_.begin(), triangles_.end()));
+}
+
+void MemberWriter::restore_rows(const StateArchive& a) {
+  columns_.clear();
+  series_.clear();
+  const std::string& columns = a.text("member.columns");
+  for (std::size_t start = 0, end; (end = columns.find('\n', start)) != std::string::npos; start = end + 1)
+    columns_.push_back(columns.substr(start, end - start));
+  rows_ = static_cast<std::size_t>(a.integer("member.rows"));
+  for (const auto& c : columns_) {
+    series_[c] = a.doubles("member.series." + c);
+    if (series_[c].size() != rows_) throw std::runtime_error("restart point: series " + c + " has the wrong length");
+  }
+  beta_.clear();
+  const auto& beta = a.doubles("member.beta");
+  const auto beta_rows = static_cast<std::size_t>(a.integer("member.beta_rows"));
+  if (beta_rows > 0) {
+    if (beta.size() % beta_rows != 0) throw std::runtime_error("restart point: beta is not rectangular");
+    const std::size_t w = beta.size() / beta_rows;
+    for (std::size_t r = 0; r < beta_rows; ++r) beta_.emplace_back(beta.begin() + r * w, beta.begin() + (r + 1) * w);
+  }
+  shapes_.clear();
+  const auto& kt = a.doubles("member.shapes.kt");
+  const auto& dims = a.ints("member.shapes.dim");
+  const auto& sizes = a.ints("member.shapes.size");
+  const auto& xyz = a.doubles("member.shapes.xyz");
+  if (dims.size() != kt.size() || sizes.size() != kt.size()) throw std::runtime_error("restart point: shapes do not match");
+  std::size_t at = 0;
+  for (std::size_t i = 0; i < kt.size(); ++i) {
+    const auto n = static_cast<std::size_t>(sizes[i]);
+    if (at + n > xyz.size()) throw std::runtime_error("restart point: shapes are truncated");
+    shapes_.push_back({kt[i], std::vector<double>(xyz.begin() + at, xyz.begin() + at + n), static_cast<int>(dims[i])});
+    at += n;
+  }
+  const auto& tri = a.ints("member.triangles");
+  triangles_.assign(tri.begin(), tri.end());
+}
+
 // ---------------------------------------------------------------- reading
 
 namespace {
@@ -320,6 +381,9 @@ MemberStatus read_member_status(const std::string& path) {
   MemberStatus s;
   if (a.contains("status") && a["status"].is_string()) s.status = a["status"];
   if (a.contains("member_id") && a["member_id"].is_string()) s.member_id = a["member_id"];
+  if (a.contains("wall_seconds") && a["wall_seconds"].is_number()) s.wall_seconds = a["wall_seconds"].get<double>();
+  if (a.contains("steps") && a["steps"].is_number()) s.steps = a["steps"].get<double>();
+  if (a.contains("threads") && a["threads"].is_number()) s.threads = a["threads"].get<long>();
   return s;
 }
 

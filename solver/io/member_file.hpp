@@ -2,11 +2,14 @@
 // One HDF5 file per member (CONTRACTS.md, README "Member files").
 // Written to <path>.partial and renamed to <path> when the member ends, so a killed
 // run never leaves a file that looks finished.
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <variant>
 #include <vector>
+
+#include "solver/io/state_archive.hpp"
 
 namespace capsule::io {
 
@@ -34,6 +37,11 @@ class MemberWriter {
 
   void checkpoint();                       // rewrite <path>.partial, status "running"
   void finish(const std::string& status);  // write status, rename .partial -> final
+
+  // Restart points (solver/run/checkpoint.hpp): the rows, tracked angles and shapes written
+  // so far, under names "member.*". Attributes are not saved: the run sets them again.
+  void save_rows(StateArchive& archive) const;
+  void restore_rows(const StateArchive& archive);  // replaces what this writer holds
 
  private:
   void write(const std::string& path, const std::string& status) const;
@@ -79,6 +87,10 @@ MemberData read_member(const std::string& path);
 struct MemberStatus {
   std::string status;
   std::string member_id;
+  // What the run measured (NaN / 0 when absent): for the planner's speed calibration.
+  double wall_seconds = std::numeric_limits<double>::quiet_NaN();
+  double steps = std::numeric_limits<double>::quiet_NaN();
+  long threads = 0;
 };
 MemberStatus read_member_status(const std::string& path);
 

@@ -122,6 +122,37 @@ double Fluid<L>::total_mass() const {
   return mass;
 }
 
+template <class L>
+void Fluid<L>::export_state(State& out) const {
+  out.populations.resize(std::size_t(Q) * n_);
+  for (int i = 0; i < Q; ++i)
+    for (std::size_t node = 0; node < n_; ++node) out.populations[std::size_t(i) * n_ + node] = f_[population_index(i, node)];
+  out.density.assign(density_.begin(), density_.end());
+  out.velocity.assign(velocity_.begin(), velocity_.end());
+  out.viscosity = node_viscosity_;
+}
+
+template <class L>
+void Fluid<L>::import_state(State&& in) {
+  if (in.populations.size() != std::size_t(Q) * n_ || in.density.size() != n_ || in.velocity.size() != 3 * n_ ||
+      !(in.viscosity.empty() || in.viscosity.size() == n_))
+    throw std::invalid_argument("Fluid::import_state: the saved fields do not fit this lattice");
+  for (int i = 0; i < Q; ++i)
+    for (std::size_t node = 0; node < n_; ++node) f_[population_index(i, node)] = in.populations[std::size_t(i) * n_ + node];
+  std::copy(in.density.begin(), in.density.end(), density_.begin());
+  std::copy(in.velocity.begin(), in.velocity.end(), velocity_.begin());
+  if (in.viscosity.empty()) {
+    set_uniform_viscosity(nu_);
+  } else {
+    // Every rate follows from its node's viscosity alone (as update_marked_rates() computes it).
+    node_viscosity_ = std::move(in.viscosity);
+    node_shear_rate_.resize(n_);
+    for (std::size_t node = 0; node < n_; ++node) node_shear_rate_[node] = shear_rate_from_viscosity(node_viscosity_[node]);
+    marked_.assign(n_, 0);
+    marked_nodes_.clear();
+  }
+}
+
 template class Fluid<D2Q9>;
 template class Fluid<D3Q19>;
 

@@ -91,6 +91,19 @@ class Fluid {
   // Populations f_i at a node (pre-collision, current level) -- for tests and diagnostics.
   double population(int i, std::size_t node) const { return f_[population_index(i, node)]; }
 
+  // Save and restore for restart points (solver/run/checkpoint.hpp): everything a later step()
+  // depends on, in an order that does not depend on the memory layout, so that a new layout
+  // re-implements only these two functions.
+  //   populations  Q n values, f_i(node) at the current level, i slowest, node = index(x, y, z)
+  //   density, velocity  n and 3 n values as the last step() left them (outputs of step())
+  //   viscosity    n per-node nu, or empty in the uniform mode
+  // The wall velocity and the force are set by the driver before every step: not state.
+  struct State {
+    std::vector<double> populations, density, velocity, viscosity;
+  };
+  void export_state(State& out) const;
+  void import_state(State&& in);  // throws std::invalid_argument when a size does not match
+
  private:
   void update_marked_rates();
   // Populations are stored with padded x-rows (PaddedRows in stream_collide.hpp).

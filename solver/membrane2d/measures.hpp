@@ -40,6 +40,12 @@ class PhaseAngle {
   double value() const;
   double unwrapped() const { return beta_; }
 
+  // Restart points: {started, alpha, theta, offset, beta}.
+  std::vector<double> state() const { return {started_ ? 1.0 : 0.0, alpha_, theta_, offset_, beta_}; }
+  void restore(const std::vector<double>& s) {
+    started_ = s.at(0) != 0.0, alpha_ = s.at(1), theta_ = s.at(2), offset_ = s.at(3), beta_ = s.at(4);
+  }
+
  private:
   bool started_ = false;
   double alpha_ = 0, theta_ = 0, offset_ = 0, beta_ = 0;

@@ -32,6 +32,26 @@ void Membrane::set_node_velocity(const std::vector<double>& U, double mobility) 
   implicit_ = true;
 }
 
+Membrane::History Membrane::history() const {
+  return {xy_, lambda_prev1_, lambda_prev2_, U_, Fv_prev_, history_, implicit_, mobility_};
+}
+
+void Membrane::restore(const History& h) {
+  const auto fits = [&](const std::vector<double>& v, std::size_t n) { return v.empty() || v.size() == n; };
+  if (h.xy.size() != 2 * n_ || !fits(h.lambda_prev1, n_) || !fits(h.lambda_prev2, n_) || !fits(h.U, 2 * n_) ||
+      h.Fv_prev.size() != 2 * n_)
+    throw std::invalid_argument("Membrane::restore: the saved history does not fit this membrane");
+  xy_ = h.xy;
+  lambda_prev1_ = h.lambda_prev1;
+  lambda_prev2_ = h.lambda_prev2;
+  U_ = h.U;
+  Fv_prev_ = h.Fv_prev;
+  history_ = h.steps;
+  implicit_ = h.implicit;
+  mobility_ = h.mobility;
+  fit_geometry();
+}
+
 void Membrane::fit_geometry() {
   for (std::size_t i = 0; i < n_; ++i) {
     const std::size_t j = (i + 1) % n_;

@@ -75,6 +75,18 @@ class Membrane {
   // share of arc length (l_{i-1} + l_i)/2: the text's discretisation, not conservative.
   std::vector<double> pointwise_forces() const;
 
+  // Restart points (solver/run/checkpoint.hpp): the positions and the history a later
+  // compute_forces() reads (stretches one and two steps back, the implicit viscous state).
+  // The reference (l0, kappa0) follows from the scene and is rebuilt, not restored.
+  struct History {
+    std::vector<double> xy, lambda_prev1, lambda_prev2, U, Fv_prev;
+    int steps = 0;
+    bool implicit = false;
+    double mobility = 0;
+  };
+  History history() const;
+  void restore(const History& h);  // throws std::invalid_argument on a size mismatch
+
  private:
   void fit_geometry();
 

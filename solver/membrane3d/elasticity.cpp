@@ -30,6 +30,25 @@ ElasticMembrane::ElasticMembrane(const Mesh& ref, const Constitutive& law, const
   }
 }
 
+std::vector<double> ElasticMembrane::memory() const {
+  std::vector<double> flat;
+  flat.reserve(8 * Q_.size());
+  for (std::size_t t = 0; t < Q_.size(); ++t) {
+    for (int k = 0; k < 4; ++k) flat.push_back(Q_[t](k % 2, k / 2));
+    for (int k = 0; k < 4; ++k) flat.push_back(Sm_previous_[t](k % 2, k / 2));
+  }
+  return flat;
+}
+
+void ElasticMembrane::restore_memory(const std::vector<double>& flat, bool started) {
+  if (flat.size() != 8 * Q_.size()) throw std::invalid_argument("ElasticMembrane::restore_memory: the saved SLS memory does not fit");
+  for (std::size_t t = 0; t < Q_.size(); ++t) {
+    for (int k = 0; k < 4; ++k) Q_[t](k % 2, k / 2) = flat[8 * t + k];
+    for (int k = 0; k < 4; ++k) Sm_previous_[t](k % 2, k / 2) = flat[8 * t + 4 + k];
+  }
+  memory_started_ = started;
+}
+
 double ElasticMembrane::reference_total_area() const {
   double a = 0;
   for (double x : area0_) a += x;

@@ -55,6 +55,12 @@ class ElasticMembrane {
   double reference_total_area() const;
   const Constitutive& law() const { return law_; }
 
+  // Restart points: the SLS memory (Q and S_m of the last step per triangle, 2x2 each, flat
+  // column-major, 8 numbers per triangle; empty before the first step or without SLS).
+  std::vector<double> memory() const;
+  bool memory_started() const { return memory_started_; }
+  void restore_memory(const std::vector<double>& flat, bool started);  // throws on a size mismatch
+
  private:
   Constitutive law_;
   MaxwellElement maxwell_;

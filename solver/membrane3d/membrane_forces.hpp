@@ -33,6 +33,8 @@ class MembraneForces {
   const MembraneTimings& timings() const { return timings_; }
   double volume0() const { return volume0_; }
   const ElasticMembrane& elastic() const { return elastic_; }
+  ElasticMembrane& elastic() { return elastic_; }  // restart points restore the SLS memory
+  void set_timings(const MembraneTimings& t) { timings_ = t; }
   const HelfrichBending& bending() const { return bending_; }
   bool needs_curvature() const { return E_B_ > 0 || K_v_ > 0; }
 

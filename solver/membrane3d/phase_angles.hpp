@@ -20,6 +20,9 @@ class PhaseTracker {
   std::vector<double> update(const Mesh& current, const Vec3& centroid, double theta);
   const std::vector<int>& vertices() const { return vertex_; }
   const std::vector<double>& initial_positions() const { return gamma0_; }
+  // Restart points: the continuous Gamma of each tracked vertex (the rest follows from the start shape).
+  const std::vector<double>& continuous_positions() const { return gamma_; }
+  void restore(const std::vector<double>& gamma) { gamma_ = gamma; }
 
  private:
   std::vector<int> vertex_;

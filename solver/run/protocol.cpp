@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 #include <sstream>
+#include <stdexcept>
 
 namespace capsule {
 namespace {
@@ -135,6 +136,45 @@ void Protocol::observe(double kt, double D, double theta, double beta) {
   prev_theta_ = theta;
   prev_beta_ = beta;
   have_prev_ = true;
+}
+
+Protocol::Outlook Protocol::outlook() const {
+  Outlook o;
+  const bool shear_capped = shear_.until != "time";
+  const bool recover_capped = recover_.until != "time";
+  const double shear_end = shear_capped ? shear_.max_kt : shear_.kt;
+  const double recover_span = recover_capped ? recover_.max_kt : recover_.kt;
+  switch (phase_) {
+    case Phase::shear:
+      o = {"shear", shear_end, shear_capped, shear_end + recover_span, shear_capped || recover_capped};
+      break;
+    case Phase::recover:
+      o = {"recover", t_stop_ + recover_span, recover_capped, t_stop_ + recover_span, recover_capped};
+      break;
+    case Phase::done:
+      o = {"done", t_end_, false, t_end_, false};
+      break;
+  }
+  return o;
+}
+
+Protocol::State Protocol::state() const {
+  return {static_cast<int>(phase_), kt_, D_, prev_theta_, prev_beta_, have_prev_,
+          {t_max_, D_max_, t_stop_, D_stop_, t_min_, D_min_, t_end_, D_inf_}, note_};
+}
+
+void Protocol::restore(const State& s) {
+  if (s.phase < 0 || s.phase > 2 || s.markers.size() != 8 || s.kt.size() != s.D.size())
+    throw std::invalid_argument("Protocol::restore: not a protocol state");
+  phase_ = static_cast<Phase>(s.phase);
+  kt_ = s.kt;
+  D_ = s.D;
+  prev_theta_ = s.prev_theta;
+  prev_beta_ = s.prev_beta;
+  have_prev_ = s.have_prev;
+  t_max_ = s.markers[0], D_max_ = s.markers[1], t_stop_ = s.markers[2], D_stop_ = s.markers[3];
+  t_min_ = s.markers[4], D_min_ = s.markers[5], t_end_ = s.markers[6], D_inf_ = s.markers[7];
+  note_ = s.note;
 }
 
 std::map<std::string, double> Protocol::markers() const {

@@ -33,6 +33,30 @@ class Protocol {
   // Why the shear stopped and why the run ended, for the member file.
   std::string phase_note() const { return note_; }
 
+  // Where the member stands, for progress lines: the phase ("shear", "recover", "done"), when
+  // the phase ends at the latest (its set time, or its cap max_kt when it ends on a condition:
+  // then phase_end_is_cap) and when the member ends at the latest.
+  struct Outlook {
+    std::string phase;
+    double phase_end_kt = 0;
+    bool phase_end_is_cap = false;
+    double member_end_kt = 0;
+    bool member_end_is_cap = false;
+  };
+  Outlook outlook() const;
+
+  // Restart points: everything observe() reads and markers() reports.
+  struct State {
+    int phase = 0;  // 0 shear, 1 recover, 2 done
+    std::vector<double> kt, D;
+    double prev_theta = 0, prev_beta = 0;
+    bool have_prev = false;
+    std::vector<double> markers;  // t_max, D_max, t_stop, D_stop, t_min, D_min, t_end, D_inf
+    std::string note;
+  };
+  State state() const;
+  void restore(const State& s);
+
  private:
   enum class Phase { shear, recover, done };
   bool steady(double window_kt, double tolerance, double since_kt) const;

@@ -6,11 +6,15 @@
 
 #include <chrono>
 #include <ctime>
+#include <filesystem>
 #include <iostream>
 
 #include "build_info.hpp"
 #include "solver/io/member_file.hpp"
 #include "solver/io/output_path.hpp"
+#include "solver/scene/memory_estimate.hpp"
+#include "solver/run/progress.hpp"
+#include "solver/run/run_control.hpp"
 #include "solver/run/simulation2d.hpp"
 #include "solver/run/simulation3d.hpp"
 #include "solver/scene/scene.hpp"
@@ -48,31 +52,97 @@ int run_member(const RunOptions& options) {
     std::cerr << "capsule: " << e.what() << "\n";
     return 2;
   }
+  if (const std::string too_big = memory_refusal(scene); !too_big.empty()) {
+    std::cerr << "capsule: " << options.scene_path << ": " << too_big << "\n";
+    return 2;
+  }
   if (options.threads > 0) omp_set_num_threads(options.threads);
+  const long threads = options.threads > 0 ? options.threads : omp_get_max_threads();
 
   const auto t0 = std::chrono::steady_clock::now();
+  const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  const std::string restart_path = restart_path_for(options.output_path);
+  const std::string canonical = scene.to_json().dump();
   try {
-    io::MemberWriter out(options.output_path);
-    out.set_scene(scene.to_json());
-    out.set_attribute("member_id", options.member_id);
-    out.set_attribute("code_version", build::code_version);
-    out.set_attribute("physics_version", physics_version);
-    out.set_attribute("host", host_name());
-    out.set_attribute("started", utc_now());
-    out.set_attribute("dim", static_cast<long>(scene.dim));
-    out.set_attribute("threads", static_cast<long>(options.threads > 0 ? options.threads : omp_get_max_threads()));
-    out.checkpoint();  // a .partial exists from the start
-
-    std::string status;
-    try {
-      status = scene.dim == 2 ? run_simulation2d(scene, out, options.quiet)
-                              : run_simulation3d(scene, out, options.quiet);
-    } catch (const std::exception& e) {
-      status = std::string("stopped: ") + e.what();
+    // A restart point of this very run (scene, physics, build, id) is continued; any other is refused.
+    const RestartIdentity identity = current_identity(canonical, options.member_id);
+    std::unique_ptr<io::StateArchive> resume = load_restart_point(restart_path, identity, std::cerr);
+    double wall_before = 0;  // wall seconds of the earlier sessions up to their last restart point
+    long restarts = 0;
+    std::string started = utc_now();
+    if (resume) {
+      wall_before = resume->number("run.wall_seconds");
+      restarts = static_cast<long>(resume->integer("run.restarts")) + 1;
+      started = resume->text("run.started");
+      const long saved_threads = static_cast<long>(resume->integer("run.threads"));
+      if (saved_threads != threads)
+        std::cerr << "capsule: the restart point was written with " << saved_threads << " threads, this run has "
+                  << threads << ": the rows match an uninterrupted run bitwise only for equal thread counts\n";
     }
-    out.set_attribute("finished", utc_now());
-    out.set_attribute("wall_seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-    out.finish(status);
+
+    // One attempt: from the restart point when there is one, else from the start.
+    std::string status;
+    auto attempt = [&](io::MemberWriter& out) {
+      out.set_scene(scene.to_json());
+      out.set_attribute("member_id", options.member_id);
+      out.set_attribute("code_version", build::code_version);
+      out.set_attribute("physics_version", physics_version);
+      out.set_attribute("host", host_name());
+      out.set_attribute("started", started);
+      out.set_attribute("dim", static_cast<long>(scene.dim));
+      out.set_attribute("threads", threads);
+      out.set_attribute("restarts", restarts);
+      write_starting_progress(progress_path_for(options.output_path));
+      out.checkpoint();  // a .partial exists from the start
+
+      RunControl control;
+      control.quiet = options.quiet;
+      control.progress_seconds = options.progress_seconds;
+      control.progress_file = progress_path_for(options.output_path);
+      control.checkpoint = options.checkpoint;
+      control.restart_path = restart_path;
+      control.resume = resume.get();
+      control.add_run_state = [&](io::StateArchive& a) {
+        put_identity(a, identity);
+        a.put_number("run.wall_seconds", wall_before + elapsed());
+        a.put_integer("run.restarts", restarts);
+        a.put_integer("run.threads", threads);
+        a.put_text("run.started", started);
+      };
+
+      try {
+        status = scene.dim == 2 ? run_simulation2d(scene, out, control) : run_simulation3d(scene, out, control);
+      } catch (const RestartRefused&) {
+        throw;
+      } catch (const std::exception& e) {
+        status = std::string("stopped: ") + e.what();
+      }
+    };
+    std::unique_ptr<io::MemberWriter> out = std::make_unique<io::MemberWriter>(options.output_path);
+    try {
+      try {
+        attempt(*out);
+      } catch (const RestartRefused& e) {
+        std::cerr << "capsule: restart point " << restart_path << " refused: " << e.what() << "; starting afresh\n";
+        std::error_code ec;
+        std::filesystem::remove(restart_path, ec);
+        resume.reset();
+        wall_before = 0, restarts = 0, started = utc_now();
+        out = std::make_unique<io::MemberWriter>(options.output_path);
+        attempt(*out);
+      }
+    } catch (const SimulatedKill& k) {
+      std::cerr << "capsule: stopped at step " << k.step
+                << " as asked (--stop-after-step); the .partial and the restart point are kept\n";
+      return 1;
+    }
+    resume.reset();
+    out->set_attribute("finished", utc_now());
+    out->set_attribute("wall_seconds", wall_before + elapsed());
+    out->finish(status);
+    std::error_code ec;
+    std::filesystem::remove(restart_path, ec);  // the member has ended: nothing to resume
+    std::filesystem::remove(progress_path_for(options.output_path), ec);
     if (!options.quiet || status != "complete") std::cerr << "capsule: " << options.output_path << ": " << status << "\n";
     if (status == "complete") return 0;
     if (status.rfind("unstable", 0) == 0) return 3;

@@ -2,6 +2,8 @@
 // Runs one scene from start to end and writes its member file.
 #include <string>
 
+#include "solver/run/checkpoint.hpp"
+
 namespace capsule {
 
 struct RunOptions {
@@ -9,10 +11,14 @@ struct RunOptions {
   std::string output_path;
   int threads = 0;        // 0: leave OpenMP's default
   std::string member_id;  // recorded in the member file; study passes the hash
-  bool quiet = false;
+  bool quiet = false;     // no progress lines (the progress file is still written)
+  double progress_seconds = 5;
+  CheckpointPolicy checkpoint;  // restart points (README "Checkpoints")
 };
 
 // Exit codes: 0 complete, 3 unstable, 2 bad scene or usage, 1 other failure.
+// With a restart point beside the output (<output>.restart) of the same scene, physics and
+// build, the run continues from it; one of another identity is refused and removed.
 int run_member(const RunOptions& options);
 
 }  // namespace capsule

@@ -8,6 +8,7 @@
 #include <limits>
 #include <numbers>
 #include <sstream>
+#include <stdexcept>
 
 #include "solver/ib/interpolation.hpp"
 #include "solver/ib/viscosity_contrast.hpp"
@@ -153,6 +154,83 @@ void Simulation2D::step(double shear_factor) {
   ++s.steps;
 }
 
+namespace {
+std::vector<std::int64_t> as_ints(const std::vector<std::size_t>& v) { return {v.begin(), v.end()}; }
+void require_equal(const std::vector<double>& saved, const std::vector<double>& rebuilt, const char* what) {
+  if (saved.size() != rebuilt.size() || !std::equal(saved.begin(), saved.end(), rebuilt.begin()))
+    throw std::runtime_error(std::string("restart point: the ") + what + " differs from this build's");
+}
+}  // namespace
+
+void Simulation2D::save_state(io::StateArchive& a) const {
+  const Impl& s = *impl_;
+  lbm::Fluid<lbm::D2Q9>::State f;
+  s.fluid.export_state(f);
+  a.put("fluid.populations", std::move(f.populations));
+  a.put("fluid.density", std::move(f.density));
+  a.put("fluid.velocity", std::move(f.velocity));
+  a.put("fluid.viscosity", std::move(f.viscosity));
+  const auto h = s.membrane.history();
+  a.put("membrane.xy", h.xy);
+  a.put("membrane.lambda_prev1", h.lambda_prev1);
+  a.put("membrane.lambda_prev2", h.lambda_prev2);
+  a.put("membrane.U", h.U);
+  a.put("membrane.Fv_prev", h.Fv_prev);
+  a.put("membrane.flags", std::vector<std::int64_t>{h.steps, h.implicit ? 1 : 0});
+  a.put_number("membrane.mobility", h.mobility);
+  // The reference state, to check that a resumed run rebuilt the same one.
+  a.put("membrane.reference_lengths", s.membrane.reference_lengths());
+  a.put("membrane.reference_curvature", s.membrane.reference_curvature());
+  a.put("sim.U", s.U);
+  a.put_integer("sim.steps", s.steps);
+  a.put("sim.phase", s.phase.state());
+  a.put("sim.seconds", std::vector<double>{s.t_membrane, s.t_fluid});
+  if (s.contrast) {
+    std::vector<std::int64_t> inside;
+    const auto& flags = s.contrast->inside_flags();
+    for (std::size_t node = 0; node < flags.size(); ++node)
+      if (flags[node]) inside.push_back(static_cast<std::int64_t>(node));
+    a.put("contrast.inside", std::move(inside));
+    a.put("contrast.band", as_ints(s.contrast->band_nodes()));
+    a.put_integer("contrast.initialised", s.contrast->initialised() ? 1 : 0);
+  }
+}
+
+void Simulation2D::restore_state(io::StateArchive& a) {
+  Impl& s = *impl_;
+  require_equal(a.doubles("membrane.reference_lengths"), s.membrane.reference_lengths(), "membrane's reference lengths");
+  require_equal(a.doubles("membrane.reference_curvature"), s.membrane.reference_curvature(), "membrane's reference curvature");
+  lbm::Fluid<lbm::D2Q9>::State f{a.take_doubles("fluid.populations"), a.take_doubles("fluid.density"),
+                                 a.take_doubles("fluid.velocity"), a.take_doubles("fluid.viscosity")};
+  s.fluid.import_state(std::move(f));
+  membrane2d::Membrane::History h;
+  h.xy = a.doubles("membrane.xy");
+  h.lambda_prev1 = a.doubles("membrane.lambda_prev1");
+  h.lambda_prev2 = a.doubles("membrane.lambda_prev2");
+  h.U = a.doubles("membrane.U");
+  h.Fv_prev = a.doubles("membrane.Fv_prev");
+  const auto& flags = a.ints("membrane.flags");
+  if (flags.size() != 2) throw std::runtime_error("restart point: membrane.flags is not 2 integers");
+  h.steps = static_cast<int>(flags[0]);
+  h.implicit = flags[1] != 0;
+  h.mobility = a.number("membrane.mobility");
+  s.membrane.restore(h);
+  s.U = a.doubles("sim.U");
+  if (s.U.size() != 2 * s.membrane.size()) throw std::runtime_error("restart point: sim.U does not fit the membrane");
+  s.steps = static_cast<long>(a.integer("sim.steps"));
+  s.phase.restore(a.doubles("sim.phase"));
+  const auto& t = a.doubles("sim.seconds");
+  if (t.size() == 2) s.t_membrane = t[0], s.t_fluid = t[1];
+  if (s.contrast) {
+    std::vector<char> inside(s.grid.size(), 0);
+    for (auto node : a.ints("contrast.inside")) inside.at(static_cast<std::size_t>(node)) = 1;
+    const auto& band = a.ints("contrast.band");
+    s.contrast->restore(inside, std::vector<std::size_t>(band.begin(), band.end()), a.integer("contrast.initialised") != 0);
+  }
+  s.spread_from.clear();  // the next step clears the whole force field, then spreads
+  s.broken.clear();
+}
+
 std::map<std::string, double> Simulation2D::row() {
   Impl& s = *impl_;
   const auto& xy = s.membrane.positions();
@@ -213,7 +291,7 @@ std::string Simulation2D::health(const std::map<std::string, double>& r) const {
   return why.str();
 }
 
-std::string run_simulation2d(const Scene& scene, io::MemberWriter& out, bool quiet) {
+std::string run_simulation2d(const Scene& scene, io::MemberWriter& out, const RunControl& control) {
   Simulation2D sim(scene);
   Protocol protocol(scene);
   const Units& u = sim.units();
@@ -223,7 +301,7 @@ std::string run_simulation2d(const Scene& scene, io::MemberWriter& out, bool qui
   out.set_attribute("beta_tracked", std::string("node 0, initially at the end of the major axis; wrapped into (-pi, pi]"));
 
   const std::string status = run_output_loop(
-      sim, scene, protocol, out, quiet, u.shear_rate,
+      sim, scene, protocol, out, control, u.shear_rate, static_cast<double>(scene.grid()[0]) * scene.grid()[1],
       [&](std::vector<double>& beta) {
         beta.assign(1, sim.beta());
         return sim.row();

@@ -27,6 +27,8 @@
 #include <vector>
 
 #include "solver/io/member_file.hpp"
+#include "solver/io/state_archive.hpp"
+#include "solver/run/run_control.hpp"
 #include "solver/scene/scene.hpp"
 #include "solver/scene/units.hpp"
 
@@ -73,6 +75,12 @@ class Simulation2D {
   double seconds_membrane() const;
   double seconds_fluid() const;
 
+  // Restart points (solver/run/checkpoint.hpp): everything a later step() and row() read.
+  // restore_state() moves the large fields out of the archive; it throws when the archive does
+  // not fit this scene (another lattice, node count or reference shape).
+  void save_state(io::StateArchive& archive) const;
+  void restore_state(io::StateArchive& archive);
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
@@ -80,6 +88,11 @@ class Simulation2D {
 
 // Runs the scene to the end of its protocol, appending rows to `out` (and the solver's
 // choices as attributes). Returns "complete" or "unstable at kt = X: reason".
-std::string run_simulation2d(const Scene& scene, io::MemberWriter& out, bool quiet);
+std::string run_simulation2d(const Scene& scene, io::MemberWriter& out, const RunControl& control);
+inline std::string run_simulation2d(const Scene& scene, io::MemberWriter& out, bool quiet) {
+  RunControl c;
+  c.quiet = quiet;
+  return run_simulation2d(scene, out, c);
+}
 
 }  // namespace capsule

@@ -177,6 +177,80 @@ class Simulation3D {
     return why.str();
   }
 
+  // Restart points (solver/run/checkpoint.hpp): everything a later step() and row() read.
+  void save_state(io::StateArchive& a) const {
+    lbm::Fluid<lbm::D3Q19>::State f;
+    fluid_.export_state(f);
+    a.put("fluid.populations", std::move(f.populations));
+    a.put("fluid.density", std::move(f.density));
+    a.put("fluid.velocity", std::move(f.velocity));
+    a.put("fluid.viscosity", std::move(f.viscosity));
+    a.put("membrane.x", shape());
+    a.put("membrane.sls_memory", forces_.elastic().memory());
+    a.put_integer("membrane.sls_started", forces_.elastic().memory_started() ? 1 : 0);
+    // The reference state, to check that a resumed run rebuilt the same one.
+    std::vector<double> reference(mesh_.triangle_count());
+    for (int t = 0; t < mesh_.triangle_count(); ++t) reference[t] = forces_.elastic().reference_area(t);
+    reference.push_back(forces_.volume0());
+    a.put("membrane.reference", std::move(reference));
+    a.put("sim.phase", phase_.continuous_positions());
+    a.put_integer("sim.steps", steps_);
+    const auto& mt = forces_.timings();
+    a.put("sim.seconds", std::vector<double>{timings_.fluid, timings_.coupling, timings_.power_law, mt.elastic_s,
+                                             mt.curvature_s, mt.bending_s});
+    if (contrast_) {
+      std::vector<std::int64_t> inside;
+      const auto& flags = contrast_->inside_flags();
+      for (std::size_t node = 0; node < flags.size(); ++node)
+        if (flags[node]) inside.push_back(static_cast<std::int64_t>(node));
+      a.put("contrast.inside", std::move(inside));
+      const auto& band = contrast_->band_nodes();
+      a.put("contrast.band", std::vector<std::int64_t>(band.begin(), band.end()));
+      a.put_integer("contrast.initialised", contrast_->initialised() ? 1 : 0);
+      a.put("contrast.base_nu", base_nu_);
+    }
+  }
+
+  void restore_state(io::StateArchive& a) {
+    std::vector<double> reference(mesh_.triangle_count());
+    for (int t = 0; t < mesh_.triangle_count(); ++t) reference[t] = forces_.elastic().reference_area(t);
+    reference.push_back(forces_.volume0());
+    const auto& saved = a.doubles("membrane.reference");
+    if (saved.size() != reference.size() || !std::equal(saved.begin(), saved.end(), reference.begin()))
+      throw std::runtime_error("restart point: the membrane's reference state differs from this build's");
+    lbm::Fluid<lbm::D3Q19>::State f{a.take_doubles("fluid.populations"), a.take_doubles("fluid.density"),
+                                    a.take_doubles("fluid.velocity"), a.take_doubles("fluid.viscosity")};
+    fluid_.import_state(std::move(f));
+    const auto& x = a.doubles("membrane.x");
+    if (x.size() != 3 * mesh_.x.size()) throw std::runtime_error("restart point: membrane.x does not fit the mesh");
+    for (std::size_t v = 0; v < mesh_.x.size(); ++v) mesh_.x[v] = m3::Vec3(x[3 * v], x[3 * v + 1], x[3 * v + 2]);
+    forces_.elastic().restore_memory(a.doubles("membrane.sls_memory"), a.integer("membrane.sls_started") != 0);
+    phase_.restore(a.doubles("sim.phase"));
+    steps_ = static_cast<long>(a.integer("sim.steps"));
+    const auto& t = a.doubles("sim.seconds");
+    if (t.size() == 6) {
+      timings_ = {t[0], t[1], t[2]};
+      forces_.set_timings({t[3], t[4], t[5]});
+    }
+    if (contrast_) {
+      std::vector<char> inside(grid_.size(), 0);
+      for (auto node : a.ints("contrast.inside")) inside.at(static_cast<std::size_t>(node)) = 1;
+      const auto& band = a.ints("contrast.band");
+      contrast_->restore(inside, std::vector<std::size_t>(band.begin(), band.end()), a.integer("contrast.initialised") != 0);
+      base_nu_ = a.doubles("contrast.base_nu");
+    }
+    if (power_law_) {
+      // Its support and field follow from the restored positions and velocity alone: rebuild
+      // them (the fluid's viscosity already holds the field's contribution).
+      const auto normals = m3::averaged_vertex_normals(mesh_);
+      const auto areas = m3::voronoi_areas(mesh_);
+      const double* u[3] = {fluid_.velocity(0), fluid_.velocity(1), fluid_.velocity(2)};
+      power_law_->update(positions(), reinterpret_cast<const double*>(normals.data()), areas.data(),
+                         mesh_.vertex_count(), u);
+    }
+    spread_from_.clear();  // the next step clears the whole force field, then spreads
+  }
+
   std::vector<double> shape() const {
     std::vector<double> xyz;
     xyz.reserve(3 * mesh_.vertex_count());
@@ -316,7 +390,7 @@ std::string snapshot_path(const std::string& member_path, double kt) {
 
 }  // namespace
 
-std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, bool quiet) {
+std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, const RunControl& control) {
   Simulation3D sim(scene);
   Protocol protocol(scene);
   const Units& u = sim.units();
@@ -351,7 +425,9 @@ std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, bool qui
   std::vector<int> triangles;
   for (const auto& t : mesh.triangles) triangles.insert(triangles.end(), t.begin(), t.end());
   const std::string status = run_output_loop(
-      sim, scene, protocol, out, quiet, u.shear_rate, [&](std::vector<double>& beta) { return sim.row(beta); },
+      sim, scene, protocol, out, control, u.shear_rate,
+      static_cast<double>(scene.grid()[0]) * scene.grid()[1] * scene.grid()[2],
+      [&](std::vector<double>& beta) { return sim.row(beta); },
       [&](double kt) {
         out.add_shape(kt, sim.shape(), 3, triangles);
         if (scene.snapshots == "vtk")

@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <numbers>
 
 #include "solver/run/protocol.hpp"
@@ -156,4 +157,40 @@ TEST_CASE("oscillatory shear follows sin(pi t / T) (Sec. 5.2.2)", "[protocol]") 
                          {"recover", {{"until", "time"}, {"kt", 1}}}}));
   CHECK(p.shear_factor(2.0) == Approx(1.0));
   CHECK(p.shear_factor(6.0) == Approx(-1.0));
+}
+
+TEST_CASE("a protocol restored from its state continues exactly as the original", "[protocol][restart]") {
+  const json spec = {{"shear", {{"until", "steady"}, {"window_kt", 1}, {"tolerance", 1e-3}, {"max_kt", 30}}},
+                     {"recover", {{"until", "settled"}, {"window_kt", 1}, {"tolerance", 1e-3}, {"max_kt", 30}}}};
+  Protocol a(scene_with(spec)), b(scene_with(spec));
+  auto D = [](double t, bool on) { return on ? 0.3 * (1 - std::exp(-t)) : 0.3 * std::exp(-(t - 8)); };
+  double kt = 0;
+  int i = 0;
+  for (; kt < 5; ++i) kt = i * 0.05, a.observe(kt, D(kt, a.shear_on()), 0.1 * i, 0.2 * i);
+  b.restore(a.state());
+  for (; !a.finished(); ++i) {
+    kt = i * 0.05;
+    a.observe(kt, D(kt, a.shear_on()), 0.1 * i, 0.2 * i);
+    b.observe(kt, D(kt, b.shear_on()), 0.1 * i, 0.2 * i);
+    REQUIRE(a.shear_on() == b.shear_on());
+  }
+  CHECK(b.finished());
+  const auto ma = a.markers(), mb = b.markers();
+  for (const auto& [k, v] : ma) CHECK(std::memcmp(&v, &mb.at(k), sizeof v) == 0);
+  CHECK(a.phase_note() == b.phase_note());
+}
+
+TEST_CASE("the protocol's outlook names the phase and when it ends at the latest", "[protocol]") {
+  Protocol p(scene_with({{"shear", {{"until", "steady"}, {"max_kt", 20}}}, {"recover", {{"until", "time"}, {"kt", 3}}}}));
+  auto o = p.outlook();
+  CHECK(o.phase == "shear");
+  CHECK(o.phase_end_kt == 20);
+  CHECK(o.phase_end_is_cap);
+  CHECK(o.member_end_kt == 23);
+  Protocol q(scene_with({{"shear", {{"until", "time"}, {"kt", 2}}}, {"recover", {{"until", "time"}, {"kt", 3}}}}));
+  for (int i = 0; i <= 40; ++i) q.observe(i * 0.05, 0.1, 0.0, 0.0);
+  o = q.outlook();
+  CHECK(o.phase == "recover");
+  CHECK(o.phase_end_kt == Approx(5.0));
+  CHECK(!o.phase_end_is_cap);
 }
