@@ -6,24 +6,26 @@
 
 #include "solver/lbm/equilibrium.hpp"
 #include "solver/lbm/relaxation.hpp"
+#include "solver/lbm/in_place_stream_collide.hpp"
 #include "solver/lbm/shifted_stream_collide.hpp"
 
 namespace capsule::lbm {
 
 template <class L>
-Fluid<L>::Fluid(int nx, int ny, int nz, double nu, Precision precision)
+Fluid<L>::Fluid(int nx, int ny, int nz, double nu, Precision precision, Streaming streaming)
     : nx_(nx), ny_(ny), nz_(nz), n_(std::size_t(nx) * std::size_t(ny) * std::size_t(nz)), nu_(nu),
-      s_nu_(shear_rate_from_viscosity(nu)), precision_(precision) {
+      s_nu_(shear_rate_from_viscosity(nu)), precision_(precision), streaming_(streaming) {
   if (nx < 1 || ny < 1 || nz < 1) throw std::invalid_argument("Fluid: grid sizes must be positive");
   if (L::D == 2 && nz != 1) throw std::invalid_argument("Fluid<D2Q9>: nz must be 1");
   if (!(nu > 0.0)) throw std::invalid_argument("Fluid: viscosity must be positive");
   rows_ = PaddedRows(std::size_t(nx), std::size_t(ny) * std::size_t(nz));
+  const bool two = streaming_ == Streaming::two_lattice;
   if (precision_ == Precision::single_precision) {
     g32_.assign(Q * rows_.per_population(), 0.0f);
-    g32_next_.assign(Q * rows_.per_population(), 0.0f);
+    if (two) g32_next_.assign(Q * rows_.per_population(), 0.0f);
   } else {
     g64_.assign(Q * rows_.per_population(), 0.0);
-    g64_next_.assign(Q * rows_.per_population(), 0.0);
+    if (two) g64_next_.assign(Q * rows_.per_population(), 0.0);
   }
   force_.assign(3 * n_, 0.0);
   velocity_.assign(3 * n_, 0.0);
@@ -44,6 +46,7 @@ void Fluid<L>::initialise_velocity(const std::function<std::array<double, 3>(dou
       for (int x = 0; x < nx_; ++x) {
         const std::size_t node = index(x, y, z);
         const std::array<double, 3> v = u(x + 0.5, y + 0.5, z + 0.5);
+        swapped_ = false;  // written in the natural state
         double feq[Q];
         equilibrium<L>(1.0, v, feq);
         for (int i = 0; i < Q; ++i) {
@@ -94,17 +97,22 @@ template <class L>
 template <class T>
 void Fluid<L>::step_in() {
   Array<T>& g = current<T>();
+  if (has_viscosity_field()) update_marked_rates();
+  const double* rates = has_viscosity_field() ? node_shear_rate_.data() : nullptr;
+  const unsigned char* macro = macroscopic_rows_.empty() ? nullptr : macroscopic_rows_.data();
+  if (streaming_ == Streaming::in_place) {
+    InPlaceFields<T> a{nx_, ny_, nz_, n_, rows_, g.data(), force_.data(), velocity_.data(), density_.data(),
+                       rates, macro, s_nu_, u_bottom_, u_top_};
+    if (rates) in_place_stream_collide<L, T, T, true>(a, swapped_);
+    else in_place_stream_collide<L, T, T, false>(a, swapped_);
+    swapped_ = !swapped_;
+    return;
+  }
   Array<T>& g_next = next<T>();
   ShiftedFields<T> a{nx_, ny_, nz_, n_, rows_, g.data(), g_next.data(), force_.data(), velocity_.data(),
-                     density_.data(), nullptr, macroscopic_rows_.empty() ? nullptr : macroscopic_rows_.data(),
-                     s_nu_, u_bottom_, u_top_};
-  if (has_viscosity_field()) {
-    update_marked_rates();
-    a.shear_rate = node_shear_rate_.data();
-    shifted_stream_collide<L, T, T, true>(a);
-  } else {
-    shifted_stream_collide<L, T, T, false>(a);
-  }
+                     density_.data(), rates, macro, s_nu_, u_bottom_, u_top_};
+  if (rates) shifted_stream_collide<L, T, T, true>(a);
+  else shifted_stream_collide<L, T, T, false>(a);
   g.swap(g_next);
 }
 
@@ -146,8 +154,22 @@ double Fluid<L>::population(int i, std::size_t node) const {
 }
 
 template <class L>
+std::size_t Fluid<L>::slot(int i, std::size_t node) const {
+  if (!swapped_) return population_index(i, node);
+  // AA swapped state: f_i(x) sits in A[opp(i)][x - c_i], or in A[i][x] when x - c_i is
+  // beyond a wall (the bounced population).
+  using B = MomentBasis<L>;
+  const int x = int(node % std::size_t(nx_)), y = int((node / std::size_t(nx_)) % std::size_t(ny_));
+  const int z = int(node / (std::size_t(nx_) * std::size_t(ny_)));
+  const int ys = y - L::c[i][1];
+  if (ys < 0 || ys >= ny_) return population_index(i, node);
+  const int xs = (x - L::c[i][0] + nx_) % nx_, zs = (z - L::c[i][2] + nz_) % nz_;
+  return population_index(B::opposite[i], index(xs, ys, zs));
+}
+
+template <class L>
 double Fluid<L>::shifted_population(int i, std::size_t node) const {
-  const std::size_t k = population_index(i, node);
+  const std::size_t k = slot(i, node);
   return precision_ == Precision::single_precision ? double(g32_[k]) : g64_[k];
 }
 

@@ -28,9 +28,11 @@
 // every streaming and is never damped. Smooth forces (the IB cosine delta) hardly excite
 // it; a force alternating from node to node does (stop_shear_test measures ~1e-10 U).
 //
-// Kernel (shifted_stream_collide.hpp): the MRT of collision.hpp split as BGK at s_nu plus the
-// few moments relaxed at other rates (split_collision.hpp), on populations stored shifted by
-// the rest equilibrium, f_i - w_i, in double or float (Precision, precision.hpp).
+// Kernel: the MRT of collision.hpp split as BGK at s_nu plus the few moments relaxed at other
+// rates (split_collision.hpp), on populations stored shifted by the rest equilibrium,
+// f_i - w_i, in double or float (Precision, precision.hpp), streamed in place in one array
+// (in_place_stream_collide.hpp, the AA pattern; default) or between two arrays
+// (shifted_stream_collide.hpp; kept as the reference the in-place scheme is tested against).
 //
 // Macroscopic region. By default every step writes rho(n), u(n) at every node and reads the
 // force everywhere. set_macroscopic_region(boxes) restricts both, from the next step on, to
@@ -58,6 +60,8 @@
 
 namespace capsule::lbm {
 
+enum class Streaming { in_place, two_lattice };
+
 template <class L>
 class Fluid {
  public:
@@ -65,8 +69,10 @@ class Fluid {
   static constexpr int D = L::D;
 
   // nz = 1 for D2Q9; starts at rest, rho = 1.
-  Fluid(int nx, int ny, int nz, double nu, Precision precision = Precision::double_precision);
+  Fluid(int nx, int ny, int nz, double nu, Precision precision = Precision::double_precision,
+        Streaming streaming = Streaming::in_place);
   Precision precision() const { return precision_; }
+  Streaming streaming() const { return streaming_; }
 
   int nx() const { return nx_; }
   int ny() const { return ny_; }
@@ -115,8 +121,9 @@ class Fluid {
   double total_mass() const;
 
   // Populations f_i at a node (pre-collision, current level) -- for tests and diagnostics
-  // (stored as f_i - w_i; a checkpoint can export and import them node by node through
-  // this index map in either precision).
+  // (stored as f_i - w_i, in place: where f_i of a node sits alternates every step; a
+  // checkpoint can export and import them node by node through this accessor and a setter
+  // built on slot(), in either precision).
   double population(int i, std::size_t node) const;
 
  private:
@@ -126,6 +133,9 @@ class Fluid {
     const std::size_t row = node / std::size_t(nx_), x = node % std::size_t(nx_);
     return std::size_t(i) * rows_.per_population() + rows_.index(row, x);
   }
+  // Where population i of a node sits now (population_index in the natural state; the AA
+  // swapped state after an even in-place step: in_place_stream_collide.hpp).
+  std::size_t slot(int i, std::size_t node) const;
 
   int nx_, ny_, nz_;
   std::size_t n_;
@@ -144,9 +154,11 @@ class Fluid {
   double shifted_population(int i, std::size_t node) const;
 
   Precision precision_;
+  Streaming streaming_;
+  bool swapped_ = false;                // in place: after an even step (AA)
   PaddedRows rows_;                     // layout of one population's array
-  // Populations f_i - w_i, SoA, padded rows, two lattices; only the pair of the precision
-  // in use is allocated.
+  // Populations f_i - w_i, SoA, padded rows; only the arrays of the precision in use are
+  // allocated, the *_next_ ones only for two-lattice streaming.
   Array<double> g64_, g64_next_;
   Array<float> g32_, g32_next_;
   std::vector<unsigned char> macroscopic_rows_;  // ny*nz flags; empty: every row
