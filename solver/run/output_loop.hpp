@@ -31,6 +31,7 @@ inline void record_units(io::MemberWriter& out, const Scene& scene, const Units&
   out.set_attribute("E_B_convention", std::string("E_B = E_b a^2 E_s (README Conventions)"));
   out.set_attribute("mu_s", u.mu_s);
   out.set_attribute("steps_per_kt", u.steps_per_kt);
+  out.set_attribute("precision", scene.precision);  // of the fluid's populations
   const auto n = scene.grid();
   std::ostringstream grid;
   grid << n[0] << "x" << n[1];
@@ -44,7 +45,8 @@ inline void record_units(io::MemberWriter& out, const Scene& scene, const Units&
 // Runs `sim` to the end of the protocol. `measure(beta)` returns the row of measures and
 // fills the tracked phase angles; `write_shape(kt)` stores a shape. Sim provides kt(),
 // health(row) (empty when healthy), step(shear_factor) and optionally failure() (a
-// problem found between outputs). Returns "complete" or "unstable at kt = X: reason".
+// problem found between outputs) and full_fields_next_step() (called before the last step
+// of each output interval). Returns "complete" or "unstable at kt = X: reason".
 template <class Sim, class Measure, class WriteShape>
 std::string run_output_loop(Sim& sim, const Scene& scene, Protocol& protocol, io::MemberWriter& out, bool quiet,
                             double shear_rate, Measure&& measure, WriteShape&& write_shape) {
@@ -83,7 +85,13 @@ std::string run_output_loop(Sim& sim, const Scene& scene, Protocol& protocol, io
       last_checkpoint = Clock::now();
     }
     if (protocol.finished()) return "complete";
-    for (long i = 0; i < steps_per_output; ++i) sim.step(protocol.shear_factor(sim.kt()));
+    for (long i = 0; i < steps_per_output; ++i) {
+      // A sim that writes the fluid's velocity only near the membrane is told which step
+      // precedes a row, so the row sees the whole field (max_speed).
+      if constexpr (requires { sim.full_fields_next_step(); })
+        if (i == steps_per_output - 1) sim.full_fields_next_step();
+      sim.step(protocol.shear_factor(sim.kt()));
+    }
     if constexpr (requires { sim.failure(); }) {
       if (!sim.failure().empty()) return unstable(sim.failure());
     }
