@@ -28,6 +28,20 @@
 // every streaming and is never damped. Smooth forces (the IB cosine delta) hardly excite
 // it; a force alternating from node to node does (stop_shear_test measures ~1e-10 U).
 //
+// Kernel: the MRT of collision.hpp split as BGK at s_nu plus the few moments relaxed at other
+// rates (split_collision.hpp), on populations stored shifted by the rest equilibrium,
+// f_i - w_i, in double or float (Precision, precision.hpp), streamed in place in one array
+// (in_place_stream_collide.hpp, the AA pattern; default) or between two arrays
+// (shifted_stream_collide.hpp; kept as the reference the in-place scheme is tested against).
+//
+// Macroscopic region. By default every step writes rho(n), u(n) at every node and reads the
+// force everywhere. set_macroscopic_region(boxes) restricts both, from the next step on, to
+// the x-rows (fixed y, z) that meet the boxes: elsewhere density()/velocity() keep stale
+// values and the force is IGNORED (taken as zero). Inside, the values are bitwise those of
+// the full fields (tests/lbm/macroscopic_region_test.cpp). The 3D driver sets the rows
+// around the membrane each step (IB support, gradient stencil, motion margin) and asks for
+// the full fields on the step before an output row. set_macroscopic_everywhere() undoes it.
+//
 // Viscosity: nu = (1/s_nu - 1/2)/3 (8), (13). A Fluid runs with one uniform viscosity
 // (no per-node array exists) until set_viscosity(node, nu) is called; from then on every
 // node carries its own nu, and only nodes set since the last step get their s_nu
@@ -40,10 +54,13 @@
 #include <vector>
 
 #include "solver/lbm/huge_page_allocator.hpp"
-#include "solver/lbm/padded_rows.hpp"
 #include "solver/lbm/lattice.hpp"
+#include "solver/lbm/padded_rows.hpp"
+#include "solver/lbm/precision.hpp"
 
 namespace capsule::lbm {
+
+enum class Streaming { in_place, two_lattice };
 
 template <class L>
 class Fluid {
@@ -51,7 +68,11 @@ class Fluid {
   static constexpr int Q = L::Q;
   static constexpr int D = L::D;
 
-  Fluid(int nx, int ny, int nz, double nu);  // nz = 1 for D2Q9; starts at rest, rho = 1
+  // nz = 1 for D2Q9; starts at rest, rho = 1.
+  Fluid(int nx, int ny, int nz, double nu, Precision precision = Precision::double_precision,
+        Streaming streaming = Streaming::in_place);
+  Precision precision() const { return precision_; }
+  Streaming streaming() const { return streaming_; }
 
   int nx() const { return nx_; }
   int ny() const { return ny_; }
@@ -75,6 +96,17 @@ class Fluid {
 
   void step();
 
+  // Rows y in [y_begin, y_end) (clipped to the channel) and z in [z_begin, z_end) (periodic:
+  // any integers, wrapped; a range of nz or more is every z). Whole x-rows.
+  struct RowBox {
+    int y_begin, y_end, z_begin, z_end;
+  };
+  void set_macroscopic_region(const std::vector<RowBox>& boxes);
+  void set_macroscopic_everywhere();
+  bool macroscopic_everywhere() const { return macroscopic_rows_.empty(); }
+  // Fraction of the rows the next step writes rho, u for (1 when everywhere).
+  double macroscopic_fraction() const;
+
   const double* velocity(int d) const { return velocity_.data() + std::size_t(d) * n_; }
   const double* density() const { return density_.data(); }
 
@@ -88,13 +120,17 @@ class Fluid {
   // Sum of all populations (the conserved mass), summed in a fixed order.
   double total_mass() const;
 
-  // Populations f_i at a node (pre-collision, current level) -- for tests and diagnostics.
-  double population(int i, std::size_t node) const { return f_[population_index(i, node)]; }
+  // Populations f_i at a node (pre-collision, current level) -- for tests and diagnostics
+  // (stored as f_i - w_i, in place: where f_i of a node sits alternates every step; a
+  // checkpoint can export and import them node by node through this accessor and a setter
+  // built on slot(), in either precision).
+  double population(int i, std::size_t node) const;
 
   // Save and restore for restart points (solver/run/checkpoint.hpp): everything a later step()
   // depends on, in an order that does not depend on the memory layout, so that a new layout
   // re-implements only these two functions.
-  //   populations  Q n values, f_i(node) at the current level, i slowest, node = index(x, y, z)
+  //   populations  Q n values, f_i(node) - w_i at the current level (exact in either precision),
+  //                i slowest, node = index(x, y, z)
   //   density, velocity  n and 3 n values as the last step() left them (outputs of step())
   //   viscosity    n per-node nu, or empty in the uniform mode
   // The wall velocity and the force are set by the driver before every step: not state.
@@ -111,15 +147,35 @@ class Fluid {
     const std::size_t row = node / std::size_t(nx_), x = node % std::size_t(nx_);
     return std::size_t(i) * rows_.per_population() + rows_.index(row, x);
   }
+  // Where population i of a node sits now (population_index in the natural state; the AA
+  // swapped state after an even in-place step: in_place_stream_collide.hpp).
+  std::size_t slot(int i, std::size_t node) const;
 
   int nx_, ny_, nz_;
   std::size_t n_;
   double nu_;          // uniform viscosity
   double s_nu_;        // its shear rate
   double u_bottom_ = 0.0, u_top_ = 0.0;
-  using Field = std::vector<double, HugePageAllocator<double>>;
+  template <class T>
+  using Array = std::vector<T, HugePageAllocator<T>>;
+  using Field = Array<double>;
+  template <class T>
+  void step_in();
+  template <class T>
+  Array<T>& current();
+  template <class T>
+  Array<T>& next();
+  double shifted_population(int i, std::size_t node) const;
+
+  Precision precision_;
+  Streaming streaming_;
+  bool swapped_ = false;                // in place: after an even step (AA)
   PaddedRows rows_;                     // layout of one population's array
-  Field f_, f_next_;                    // populations, SoA, padded rows
+  // Populations f_i - w_i, SoA, padded rows; only the arrays of the precision in use are
+  // allocated, the *_next_ ones only for two-lattice streaming.
+  Array<double> g64_, g64_next_;
+  Array<float> g32_, g32_next_;
+  std::vector<unsigned char> macroscopic_rows_;  // ny*nz flags; empty: every row
   Field force_;                         // 3*n
   Field velocity_;                      // 3*n
   Field density_;                       // n

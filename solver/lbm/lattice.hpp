@@ -57,6 +57,7 @@ struct D2Q9 {
   static constexpr double fixed_rate = 1.64;  // unused in D2Q9 (no moment is in RateGroup::fixed)
   // (9): s4 = s6 = 3 (2 - s_nu) / (3 - s_nu).
   static constexpr double heat_flux_rate(double s_nu) { return 3.0 * (2.0 - s_nu) / (3.0 - s_nu); }
+  static constexpr bool heat_flux_rate_is_shear_rate = false;  // split_collision.hpp
 };
 
 struct D3Q19 {
@@ -114,6 +115,7 @@ struct D3Q19 {
   static constexpr double fixed_rate = 1.8;  // Sec. 2.1: "set equal to 1.8" (pi and m moments)
   // Sec. 2.1: s4 = s6 = s8 = s9 for isotropy.
   static constexpr double heat_flux_rate(double s_nu) { return s_nu; }
+  static constexpr bool heat_flux_rate_is_shear_rate = true;  // split_collision.hpp
 };
 
 }  // namespace capsule::lbm

@@ -39,6 +39,7 @@ inline void record_units(io::MemberWriter& out, const Scene& scene, const Units&
                                           : std::string("E_B = E_b a^2 E_s (README Conventions)"));
   out.set_attribute("mu_s", u.mu_s);
   out.set_attribute("steps_per_kt", u.steps_per_kt);
+  out.set_attribute("precision", scene.precision);  // of the fluid's populations
   const auto n = scene.grid();
   std::ostringstream grid;
   grid << n[0] << "x" << n[1];
@@ -76,7 +77,8 @@ inline void restore_protocol(const io::StateArchive& a, Protocol& p) {
 // Runs `sim` to the end of the protocol. `measure(beta)` returns the row of measures and
 // fills the tracked phase angles; `write_shape(kt)` stores a shape. Sim provides kt(),
 // steps(), health(row) (empty when healthy), step(shear_factor), save_state(archive),
-// restore_state(archive) and optionally failure() (a problem found between outputs).
+// restore_state(archive) and optionally failure() (a problem found between outputs) and
+// full_fields_next_step() (called before the last step of each output interval).
 // Returns "complete" or "unstable at kt = X: reason"; throws SimulatedKill at the test step.
 //
 // Restart points are written between two steps (anywhere inside an output interval): they
@@ -183,6 +185,10 @@ std::string run_output_loop(Sim& sim, const Scene& scene, Protocol& protocol, io
       if (!control.restart_path.empty() && healthy && clock.due(sim.steps())) write_restart_point(i);
       if (control.checkpoint.stop_after_step >= 0 && sim.steps() >= control.checkpoint.stop_after_step)
         throw SimulatedKill{sim.steps()};
+      // A sim that writes the fluid's velocity only near the membrane is told which step
+      // precedes a row, so the row sees the whole field (max_speed).
+      if constexpr (requires { sim.full_fields_next_step(); })
+        if (i == steps_per_output - 1) sim.full_fields_next_step();
       sim.step(protocol.shear_factor(sim.kt()));
       progress.tick(sim.steps(), sim.kt(), protocol);
     }

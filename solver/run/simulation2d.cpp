@@ -59,7 +59,8 @@ struct Simulation2D::Impl {
   }
 
   Impl(const Scene& s, const Units& u, const std::vector<int>& n)
-      : scene(s), units(u), grid{n[0], n[1], 1}, fluid(n[0], n[1], 1, u.nu), membrane(make_membrane(s, u, n)) {
+      : scene(s), units(u), grid{n[0], n[1], 1}, fluid(n[0], n[1], 1, u.nu, lbm::precision_from_name(s.precision)),
+        membrane(make_membrane(s, u, n)) {
     U.assign(2 * membrane.size(), 0.0);
     area0 = membrane2d::polygon_area(membrane.positions());
     if (s.V != 1.0) {

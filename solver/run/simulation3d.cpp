@@ -32,6 +32,7 @@
 
 #include "solver/ib/interpolation.hpp"
 #include "solver/ib/power_law_viscosity.hpp"
+#include "solver/ib/support_rows.hpp"
 #include "solver/ib/viscosity_contrast.hpp"
 #include "solver/lbm/fluid.hpp"
 #include "solver/membrane3d/membrane_forces.hpp"
@@ -73,7 +74,7 @@ class Simulation3D {
  public:
   explicit Simulation3D(const Scene& s)
       : scene_(s), units_(units_for(s, choose_tau(s))), n_(s.grid()),
-        grid_{n_[0], n_[1], n_[2]}, fluid_(n_[0], n_[1], n_[2], units_.nu) {
+        grid_{n_[0], n_[1], n_[2]}, fluid_(n_[0], n_[1], n_[2], units_.nu, lbm::precision_from_name(s.precision)) {
     if (s.dim != 3) throw std::invalid_argument("Simulation3D: scene.dim must be 3");
     build_membrane();
     U_.assign(3 * mesh_.vertex_count(), 0.0);
@@ -119,6 +120,7 @@ class Simulation3D {
     ib::spread<3>(grid_, positions(), reinterpret_cast<const double*>(force_.data()), n, p, kernel_);  // (21)
     const double wall = 0.5 * units_.shear_rate * grid_.ny * shear_factor;                  // k H / 2 (1)
     fluid_.set_wall_velocity(-wall, wall);
+    set_macroscopic_region();
     auto t1 = Clock::now();
     fluid_.step();
     auto t2 = Clock::now();
@@ -130,6 +132,9 @@ class Simulation3D {
     timings_.fluid += std::chrono::duration<double>(t2 - t1).count();
     ++steps_;
   }
+
+  // The next step writes u and rho everywhere (the output loop calls this before a row).
+  void full_fields_next_step() { full_fields_next_ = true; }
 
   // One output row (DESIGN 3.5) and the phase angles (91)-(92) of the five tracked vertices.
   std::map<std::string, double> row(std::vector<double>& beta) {
@@ -268,6 +273,22 @@ class Simulation3D {
  private:
   double* positions() { return reinterpret_cast<double*>(mesh_.x.data()); }
 
+  // The fluid writes u, rho and reads the force only on the rows (y, z) the membrane can
+  // reach this step (Fluid::set_macroscopic_region, ib::support_rows): the bounding box of
+  // X(n) widened by kRegionMargin nodes = 3 (the width-4 delta: spreading and interpolation at
+  // X(n)) + 1 (centred-difference gradients of the power law, at X(n+1)) + 1 (X(n+1) - X(n)
+  // < max_speed = 0.2). Everywhere on the step before an output row (max_speed reads it all).
+  static constexpr int kRegionMargin = 5;
+  void set_macroscopic_region() {
+    if (full_fields_next_) {
+      fluid_.set_macroscopic_everywhere();
+      full_fields_next_ = false;
+      return;
+    }
+    const ib::RowRange r = ib::support_rows(grid_, positions(), mesh_.vertex_count(), kRegionMargin);
+    fluid_.set_macroscopic_region({{r.y_begin, r.y_end, r.z_begin, r.z_end}});
+  }
+
   void build_membrane() {
     const Scene& s = scene_;
     const double a = s.a;
@@ -377,6 +398,7 @@ class Simulation3D {
   // with a lattice-locked error (README "The 2D capsule").
   ib::Kernel kernel_ = ib::Kernel::peskin4;
   long steps_ = 0;
+  bool full_fields_next_ = false;
   Timings timings_;
 };
 

@@ -262,7 +262,10 @@ Scene Scene::from_json(const json& j, const std::string& source) {
     // The 2D driver's implicit Kelvin-Voigt step uses the self-mobility of peskin4 (simulation2d.cpp).
     if (s.dim == 2 && s.kernel != "peskin4")
       q.fail("kernel", "kernel \"" + s.kernel + "\" is 3D only", "\"peskin4\" in 2D");
-    q.refuse_unknown({"a", "domain", "segments", "mesh_level", "tau", "kernel"});
+    // Precision of the fluid's populations (solver/lbm/precision.hpp); double is the default
+    // until a physics comparison says single is as accurate (issue 10).
+    s.precision = q.choice("precision", std::string("double"), {"double", "single"});
+    q.refuse_unknown({"a", "domain", "segments", "mesh_level", "tau", "kernel", "precision"});
   }
   {
     json proto = r.object("protocol", true);
@@ -331,6 +334,9 @@ json Scene::to_json() const {
   j["conventions"] = {{"sls_viscosity", sls_viscosity}, {"E_b_2d", E_b_2d}};
   j["resolution"] = {{"a", a}, {"domain", domain}, {"segments", segments},
                      {"mesh_level", mesh_level}, {"tau", tau}, {"kernel", kernel}};
+  // Written only when not the default: a scene that says nothing about precision keeps the
+  // canonical text, so the member ids of every campaign run before the key existed.
+  if (precision != "double") j["resolution"]["precision"] = precision;
   j["protocol"] = {{"shear", phase_json(shear, true)}, {"recover", phase_json(recover, false)}};
   j["output"] = {{"interval_kt", output_interval_kt}, {"shapes_at_kt", shapes_at_kt},
                  {"snapshots", snapshots}};

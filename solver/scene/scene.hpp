@@ -64,6 +64,7 @@ struct Scene {
   int mesh_level = 4;          // 3D icosahedron subdivisions (4 -> 2562 vertices)
   double tau = 0;              // relaxation time; 0 = chosen by the solver
   std::string kernel = "peskin4";  // IB delta (solver/ib/delta.hpp): peskin4, roma3, linear2, cosine
+  std::string precision = "double";  // fluid populations: double | single (solver/lbm/precision.hpp)
   PhaseSpec shear;
   PhaseSpec recover;
   double output_interval_kt = 0.05;
@@ -73,7 +74,8 @@ struct Scene {
   // Parses and validates; throws SceneError naming source_name, the key and the allowed range.
   static Scene from_json(const nlohmann::json& j, const std::string& source_name);
   static Scene load(const std::string& path);
-  // The complete canonical scene: every key, defaults filled, numbers typed by the schema.
+  // The complete canonical scene: every key (resolution.precision only when not "double",
+  // so member ids from before the key are unchanged), defaults filled, numbers typed by the schema.
   nlohmann::json to_json() const;
 
   // Lattice size (nx, ny, nz) from a and the domain (nz = 1 in 2D).

@@ -41,6 +41,24 @@ TEST_CASE("a minimal scene gets the documented defaults", "[scene]") {
   json j3 = j;
   j3["conventions"] = {{"E_b_2d", "dissertation"}};
   CHECK_THROWS_WITH(Scene::from_json(j3, "t.json"), Catch::Contains("conventions.E_b_2d: the 2D bending convention"));
+  CHECK(t.precision == "double");
+}
+
+TEST_CASE("resolution.precision: double by default, single selectable, only single in the canonical text", "[scene]") {
+  json j = minimal_2d();
+  const Scene d = Scene::from_json(j, "t.json");
+  CHECK(d.precision == "double");
+  // The default is left out of the canonical scene, so the ids of existing members stay.
+  CHECK_FALSE(d.to_json()["resolution"].contains("precision"));
+  j["resolution"] = {{"precision", "double"}};
+  CHECK(Scene::from_json(j, "t.json").to_json() == d.to_json());
+  j["resolution"] = {{"precision", "single"}};
+  const Scene s = Scene::from_json(j, "t.json");
+  CHECK(s.precision == "single");
+  CHECK(s.to_json()["resolution"]["precision"] == "single");
+  CHECK(Scene::from_json(s.to_json(), "t.json").precision == "single");
+  j["resolution"] = {{"precision", "half"}};
+  CHECK_THROWS_AS(Scene::from_json(j, "t.json"), SceneError);
 }
 
 TEST_CASE("the canonical scene does not depend on spelling, and round-trips", "[scene]") {

@@ -7,6 +7,10 @@
 
 namespace capsule::lbm::test {
 
+// Every fluid test runs in both precisions (scene resolution.precision).
+inline constexpr Precision both_precisions[] = {Precision::double_precision, Precision::single_precision};
+inline bool is_single(Precision p) { return p == Precision::single_precision; }
+
 // u_x(y) along the column x = 0 (z = 0): flows in these tests are uniform in x and z.
 template <class L>
 std::vector<double> velocity_profile(const Fluid<L>& fluid, int d = 0) {

@@ -20,10 +20,10 @@ struct StokesError {
 };
 
 template <class L>
-StokesError stokes_error(double nu, int period, int H) {
+StokesError stokes_error(double nu, int period, int H, Precision prec) {
   const int nz = L::D == 3 ? 2 : 1;
   const double U0 = 0.02, omega = 2.0 * M_PI / period;
-  Fluid<L> fluid(2, H, nz, nu);
+  Fluid<L> fluid(2, H, nz, nu, prec);
   // Time levels (fluid.hpp): the wall velocity set before step s acts in the streaming from
   // level s to s+1, i.e. at t = s + 1/2; velocity() after step s is level s.
   auto drive = [&](int s) {
@@ -59,10 +59,10 @@ StokesError stokes_error(double nu, int period, int H) {
 // Diffusive refinement: H = 16 r, period 100 r^2 at fixed nu, so delta/H is fixed and
 // delta = sqrt(nu T / pi) grows from ~2.3 to ~4.6 nodes (nu = 1/6).
 template <class L>
-void check_stokes(double nu) {
-  const StokesError coarse = stokes_error<L>(nu, 100, 16);
-  const StokesError fine = stokes_error<L>(nu, 400, 32);
-  INFO("nu " << nu << " amplitude errors / U0 " << coarse.amplitude << " -> " << fine.amplitude
+void check_stokes(double nu, Precision prec) {
+  const StokesError coarse = stokes_error<L>(nu, 100, 16, prec);
+  const StokesError fine = stokes_error<L>(nu, 400, 32, prec);
+  INFO("precision " << precision_name(prec) << " nu " << nu << " amplitude errors / U0 " << coarse.amplitude << " -> " << fine.amplitude
              << ", phase errors (rad) " << coarse.phase << " -> " << fine.phase);
   // On the finer grid (delta ~ 4.6 nodes for nu = 1/6, k dx = dx/delta ~ 0.2) the
   // O((dx/delta)^2) error is measured at 0.2 % of U0 in amplitude and 0.017 rad in phase
@@ -80,10 +80,13 @@ void check_stokes(double nu) {
 }  // namespace
 
 TEST_CASE("Oscillating wall (Stokes' second problem): amplitude and phase (D2Q9)", "[lbm]") {
-  check_stokes<D2Q9>(1.0 / 6.0);
-  check_stokes<D2Q9>(0.1);
+  // Both precisions, the same bounds (errors of 1e-3 U0, float round-off 1e-7 U0).
+  for (Precision p : test::both_precisions) {
+    check_stokes<D2Q9>(1.0 / 6.0, p);
+    check_stokes<D2Q9>(0.1, p);
+  }
 }
 
 TEST_CASE("Oscillating wall (Stokes' second problem): amplitude and phase (D3Q19)", "[lbm]") {
-  check_stokes<D3Q19>(1.0 / 6.0);
+  for (Precision p : test::both_precisions) check_stokes<D3Q19>(1.0 / 6.0, p);
 }

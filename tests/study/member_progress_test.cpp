@@ -50,8 +50,8 @@ TEST_CASE("study status: a live member is running with its kt and ETA, a dead on
   CHECK(s.conditions[0].state == MemberState::running);
   CHECK(s.conditions[0].reason == "shear, kt 1.25 of 5, ETA 3m10s");
   CHECK(s.conditions[1].state == MemberState::interrupted);
-  CHECK(!needs_run(s.conditions[0], false));  // a live capsule owns it
-  CHECK(needs_run(s.conditions[1], false));
+  CHECK(!needs_run(s.conditions[0], false, false));  // a live capsule owns it
+  CHECK(needs_run(s.conditions[1], false, false));
 
   const auto status = testing::run_study({"status", "c.json"}, dir);
   INFO(status.output);

@@ -1,4 +1,10 @@
 #pragma once
+// BASELINE: the fused kernel as it was before issue 10 (full moment transform of
+// collision.hpp, unshifted double populations, rho/u written and F read at every node).
+// Fluid no longer runs it; `capsule bench lbm` times it beside the new kernel (the
+// `baseline` rows, same process, same machine) and the tests use it as the two-lattice
+// reference (tests/lbm/kernel_equivalence_test.cpp). Namespace lbm::baseline.
+//
 // One fused pass: collide every node (collision.hpp) and push the post-collision
 // populations to their neighbours in the second lattice (periodic in x and z,
 // half-way bounce-back with the moving-wall correction at y = 0 and y = ny).
@@ -11,6 +17,7 @@
 
 #include "solver/lbm/collision.hpp"
 #include "solver/lbm/padded_rows.hpp"
+#include "solver/lbm/parallel.hpp"
 
 // AVX2 and baseline clones on x86-64 (GNU ifunc); one plain version elsewhere.
 #if defined(__x86_64__) && defined(__GNUC__) && defined(__linux__)
@@ -19,7 +26,7 @@
 #define CAPSULE_LBM_KERNEL_CLONES
 #endif
 
-namespace capsule::lbm {
+namespace capsule::lbm::baseline {
 
 struct StreamCollideFields {
   int nx, ny, nz;
@@ -116,8 +123,6 @@ template <class L, bool per_node, bool bottom_wall, bool top_wall>
   });
 }
 
-inline constexpr std::size_t parallel_threshold_nodes = 4096;
-
 template <class L, bool per_node>
 void stream_collide(const StreamCollideFields& a) {
   const long rows = long(a.ny) * long(a.nz);
@@ -136,4 +141,4 @@ void stream_collide(const StreamCollideFields& a) {
   }
 }
 
-}  // namespace capsule::lbm
+}  // namespace capsule::lbm::baseline
