@@ -117,7 +117,10 @@ void print_plan(const Campaign& plan_campaign, const ResultsLayout& layout, std:
           longest = std::max(longest, estimate);
         }
         if (!pending && std::isfinite(measured.wall_seconds)) seconds = format_number(measured.wall_seconds);
-        else seconds = "~" + format_number(estimated_member_seconds(c, dim, pending ? campaign.threads : 1, speed));
+        else {
+          seconds = "~";  // append(): GCC 12 -O3 reports a false -Wrestrict on "literal" + string
+          seconds.append(format_number(estimated_member_seconds(c, dim, pending ? campaign.threads : 1, speed)));
+        }
         std::string params;
         for (const auto& [key, value] : m.parameters) params += (params.empty() ? "" : ", ") + key + "=" + value.dump();
         out << std::left << std::setw(5) << i << std::setw(12) << state_name(condition.state) << std::setw(4) << dim
