@@ -51,6 +51,22 @@ struct Case {
   std::vector<double> truth;
 };
 
+// D = D_inf + (D_stop - D_inf)(w e^-u/t1 + (1 - w) e^-u/t2) sampled every 0.05 on [t_stop, t_end].
+Case free_amplitude_case(const char* name, double D_stop, double D_inf, double t1, double t2, double w, double t_stop,
+                         double t_end) {
+  return {name,
+          [=](unsigned seed) {
+            const auto s = make(t_stop, t_end, 0.05,
+                                [&](double t) {
+                                  const double u = t - t_stop;
+                                  return D_inf + (D_stop - D_inf) * (w * std::exp(-u / t1) + (1 - w) * std::exp(-u / t2));
+                                },
+                                0.002, seed);
+            return fit_double_exponential_free(s.kt, s.D, D_stop, D_inf, t_stop, t_end);
+          },
+          {t1, t2, w}};
+}
+
 std::vector<Case> cases() {
   std::vector<Case> c;
   // Noise 0.002-0.003: about 1 % of the deformation amplitudes, like a well-resolved run.
@@ -102,33 +118,12 @@ std::vector<Case> cases() {
                {0.2, 2.0}});
   // Fig. 38's shape of recovery (issue 12): a fast phase carrying a quarter of the change,
   // then a slow one; (90)'s equal halves cannot describe it, free amplitudes can.
-  c.push_back({"double exponential, free amplitudes",
-               [](unsigned seed) {
-                 const double D_stop = 0.443, D_inf = 0.795, t1 = 0.3, t2 = 6.0, w = 0.25, t_stop = 20.0, t_end = 50.0;
-                 const auto s = make(t_stop, t_end, 0.05,
-                                     [&](double t) {
-                                       const double u = t - t_stop;
-                                       return D_inf + (D_stop - D_inf) * (w * std::exp(-u / t1) + (1 - w) * std::exp(-u / t2));
-                                     },
-                                     0.002, seed);
-                 return fit_double_exponential_free(s.kt, s.D, D_stop, D_inf, t_stop, t_end);
-               },
-               {0.3, 6.0, 0.25}});
+  c.push_back(free_amplitude_case("double exponential, free amplitudes", 0.443, 0.795, 0.3, 6.0, 0.25, 20.0, 50.0));
   // The toolkit's own Fig. 38 capsule at a = 10 (issue 12 probe, E_b = 0.05): a fast phase of
   // 0.18 kt carrying 18 % of the change. From the single-exponential guess alone the fast time
-  // ran onto its floor; the multi-start finds it.
-  c.push_back({"double exponential, free amplitudes, small fast phase",
-               [](unsigned seed) {
-                 const double D_stop = 0.443, D_inf = 0.800, t1 = 0.18, t2 = 6.2, w = 0.178, t_stop = 16.4, t_end = 66.4;
-                 const auto s = make(t_stop, t_end, 0.05,
-                                     [&](double t) {
-                                       const double u = t - t_stop;
-                                       return D_inf + (D_stop - D_inf) * (w * std::exp(-u / t1) + (1 - w) * std::exp(-u / t2));
-                                     },
-                                     0.002, seed);
-                 return fit_double_exponential_free(s.kt, s.D, D_stop, D_inf, t_stop, t_end);
-               },
-               {0.18, 6.2, 0.178}});
+  // ran onto its floor on that member; the multi-start finds it.
+  c.push_back(free_amplitude_case("double exponential, free amplitudes, small fast phase", 0.443, 0.800, 0.18, 6.2,
+                                  0.178, 16.4, 66.4));
   return c;
 }
 
