@@ -68,7 +68,9 @@ Curvatures fit_curvatures(const Mesh& m, int passes) {
   out.gaussian.resize(nv);
   out.normal = averaged_vertex_normals(m);
   for (int pass = 0; pass < passes; ++pass) {
-#pragma omp parallel for schedule(static) if (nv > 8192)
+    // Each vertex's fit reads and writes only its own normal: threads do not change the result.
+    // Level 4, 2 threads, idle machine: the curvature share of a step 2.0-2.1 -> 1.6-1.8 ms.
+#pragma omp parallel for schedule(static) if (nv > 512)
     for (int p = 0; p < nv; ++p) {
       const Fit f = fit_vertex(m, p, out.normal[p]);
       out.mean[p] = f.mean;
