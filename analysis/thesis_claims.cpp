@@ -620,6 +620,19 @@ const char* k_memory_rule =
     "shape memory: the mean phase distance of the tracked elements from their rest positions (beta modulo pi) falls "
     "from the stop to the end by >= 30 % and >= 0.05 rad; none: it falls by < 20 % or < 0.05 rad";
 
+// Every recovery must satisfy `holds`; the verdict lists each member's figures.
+template <class Holds>
+void judge_every(ClaimResult& r, const std::vector<Recovery3d>& rec, const std::string& why, Holds holds) {
+  bool ok = true;
+  std::string text;
+  for (const auto& x : rec) {
+    ok = ok && holds(x);
+    text += (text.empty() ? "" : "; ") + x.text();
+  }
+  if (!why.empty()) text += "; not judged: " + why;
+  set(r, ok, text);
+}
+
 // Sec. 4.2.2: case A: "a clear, if incomplete, recovery of the initial biconcave shape has
 // occurred ... consistent with the capsule displaying shape memory".
 ClaimResult claim_4_2_A(const ThesisResults& res) {
@@ -635,14 +648,9 @@ ClaimResult claim_4_2_A(const ThesisResults& res) {
     r.measured = "cannot tell (members missing): " + (why.empty() ? std::string("no case A member") : why);
     return r;
   }
-  bool ok = true;
-  std::string text;
-  for (const auto& x : rec) {
-    ok = ok && x.share >= 0.3 && x.D_end > k_D_biconcave_3d + 0.01 && x.memory();
-    text += (text.empty() ? "" : "; ") + x.text();
-  }
-  if (!why.empty()) text += "; not judged: " + why;
-  set(r, ok, text);
+  judge_every(r, rec, why, [](const Recovery3d& x) {
+    return x.share >= 0.3 && x.D_end > k_D_biconcave_3d + 0.01 && x.memory();
+  });
   return r;
 }
 
@@ -661,14 +669,9 @@ ClaimResult claim_4_2_B(const ThesisResults& res) {
     r.measured = "cannot tell (members missing): " + (why.empty() ? std::string("no case B member") : why);
     return r;
   }
-  bool ok = true;
-  std::string text;
-  for (const auto& x : rec) {
-    ok = ok && (x.D_end < k_D_biconcave_3d - 0.01 || x.share < 0.3) && x.no_memory();
-    text += (text.empty() ? "" : "; ") + x.text();
-  }
-  if (!why.empty()) text += "; not judged: " + why;
-  set(r, ok, text);
+  judge_every(r, rec, why, [](const Recovery3d& x) {
+    return (x.D_end < k_D_biconcave_3d - 0.01 || x.share < 0.3) && x.no_memory();
+  });
   return r;
 }
 

@@ -4,19 +4,13 @@
 #include <sstream>
 
 #include "study/campaign_error.hpp"
+#include "study/results_layout.hpp"
 
 namespace capsule::study {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 std::string absolute_source(const Campaign& campaign) {
   return fs::absolute(campaign.source).lexically_normal().string();
@@ -27,8 +21,8 @@ std::string absolute_source(const Campaign& campaign) {
 void require_same_campaign(const Campaign& campaign, const ResultsLayout& layout) {
   std::error_code ec;
   if (!fs::exists(layout.campaign_json(), ec) || !fs::exists(layout.campaign_source(), ec)) return;
-  if (read_text(layout.campaign_json()) == campaign.text) return;
-  std::string recorded = read_text(layout.campaign_source());
+  if (read_file_text(layout.campaign_json()) == campaign.text) return;
+  std::string recorded = read_file_text(layout.campaign_source());
   while (!recorded.empty() && (recorded.back() == '\n' || recorded.back() == '\r')) recorded.pop_back();
   const std::string here = absolute_source(campaign);
   if (recorded.empty() || recorded == here) return;  // the same file, edited

@@ -110,7 +110,8 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
   fs::create_directories(survey.layout.root);
   std::vector<std::string> running;  // under a held lock, the members with only a .partial run
   for (std::size_t i = 0; i < survey.members.size(); ++i)
-    if (survey.conditions[i].state == MemberState::running || survey.conditions[i].state == MemberState::interrupted) running.push_back(survey.members[i].dir_name());
+    if (const MemberState st = survey.conditions[i].state; st == MemberState::running || st == MemberState::interrupted)
+      running.push_back(survey.members[i].dir_name());
   RunLock lock(survey.layout.lock_file(), survey.layout.running_info(), running);
   prepare_member_directories(survey);
 

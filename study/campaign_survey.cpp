@@ -26,15 +26,6 @@ CampaignSurvey survey_campaign(const std::string& campaign_file, const fs::path&
   return CampaignSurvey{std::move(campaign), std::move(members), std::move(layout), std::move(conditions)};
 }
 
-namespace {
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-}  // namespace
-
 void prepare_member_directories(const CampaignSurvey& survey) {
   fs::create_directories(survey.layout.members_dir());
   record_campaign(survey.campaign, survey.layout);
@@ -42,7 +33,7 @@ void prepare_member_directories(const CampaignSurvey& survey) {
     const MemberPaths p = survey.layout.member(m);
     fs::create_directories(p.dir);
     const std::string text = m.scene.dump(2) + "\n";
-    if (!fs::exists(p.scene) || read_text(p.scene) != text) write_file_atomically(p.scene, text);
+    if (!fs::exists(p.scene) || read_file_text(p.scene) != text) write_file_atomically(p.scene, text);
   }
 }
 

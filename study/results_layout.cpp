@@ -1,6 +1,7 @@
 #include "study/results_layout.hpp"
 
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <unistd.h>
 
@@ -22,6 +23,13 @@ MemberPaths ResultsLayout::member(const Member& m) const {
   p.restart = p.dir / "member.h5.restart";
   p.progress = p.dir / "member.h5.progress";
   return p;
+}
+
+std::string read_file_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
 }
 
 void write_file_atomically(const fs::path& path, const std::string& text) {

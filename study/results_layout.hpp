@@ -47,5 +47,7 @@ struct ResultsLayout {
 
 // Writes text to path atomically (temporary file in the same folder, then rename).
 void write_file_atomically(const std::filesystem::path& path, const std::string& text);
+// The whole file as text; "" when it does not exist or cannot be read.
+std::string read_file_text(const std::filesystem::path& path);
 
 }  // namespace capsule::study

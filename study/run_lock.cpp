@@ -30,13 +30,7 @@ std::string pid_state(long pid) {
 std::string describe_running(const fs::path& info_file, const std::vector<std::string>& running_members) {
   std::ostringstream m;
   m << "another `study run` of this campaign is still going";
-  nlohmann::json info;
-  {
-    std::ifstream in(info_file);
-    std::stringstream text;
-    text << in.rdbuf();
-    info = nlohmann::json::parse(text.str(), nullptr, /*allow_exceptions=*/false);
-  }
+  const nlohmann::json info = nlohmann::json::parse(read_file_text(info_file), nullptr, /*allow_exceptions=*/false);
   if (info.is_object()) {
     const long study_pid = info.value("study_pid", 0L), parallel_pid = info.value("parallel_pid", 0L);
     m << " (started " << info.value("started", std::string("?")) << " on " << info.value("host", std::string("?"))

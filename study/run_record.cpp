@@ -38,13 +38,7 @@ nlohmann::json run_record_start(const std::string& campaign_name, const std::str
 }
 
 void append_run_history(const std::filesystem::path& history, const nlohmann::json& record) {
-  std::string text;
-  {
-    std::ifstream in(history, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    text = s.str();
-  }
+  std::string text = read_file_text(history);
   if (!text.empty() && text.back() != '\n') text += '\n';
   write_file_atomically(history, text + record.dump() + "\n");
 }
