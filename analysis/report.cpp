@@ -252,6 +252,18 @@ double common_value(const std::vector<const MemberAnalysis*>& group, const std::
 
 nlohmann::json json_number(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
 
+// A member file under the campaign's results folder (the report folder's parent) is named
+// relative to that folder, so shipped results read the same from a clone in any folder;
+// one elsewhere keeps the path it was given.
+std::string recorded_member_path(const std::string& member_path, const fs::path& report_dir) {
+  if (member_path.empty()) return member_path;
+  const fs::path root = fs::weakly_canonical(fs::absolute(report_dir)).parent_path();
+  const fs::path file = fs::weakly_canonical(fs::absolute(member_path));
+  const fs::path rel = file.lexically_relative(root);
+  if (rel.empty() || *rel.begin() == "..") return member_path;
+  return rel.generic_string();
+}
+
 }  // namespace
 
 ReportSummary write_report(const ReportRequest& request) {
@@ -273,7 +285,8 @@ ReportSummary write_report(const ReportRequest& request) {
   fits_json["analysis"] = request.analysis;
   fits_json["members"] = nlohmann::json::array();
   for (const auto& m : members) {
-    nlohmann::json j{{"id", m.ref.id}, {"slug", m.ref.slug}, {"case", m.ref.case_name}, {"path", m.ref.path},
+    nlohmann::json j{{"id", m.ref.id}, {"slug", m.ref.slug}, {"case", m.ref.case_name},
+                     {"path", recorded_member_path(m.ref.path, out)},
                      {"status", m.status}};
     j["parameters"] = nlohmann::json::object();
     for (const auto& [k, v] : m.parameters) j["parameters"][k] = json_number(v);

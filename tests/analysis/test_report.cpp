@@ -105,6 +105,9 @@ TEST_CASE("write_report writes all three table formats with the expected rows", 
   REQUIRE(j["members"].size() == 8);
   for (const auto& m : j["members"]) {
     INFO(m["slug"]);
+    // Member files under the campaign's results folder are named relative to it, so a
+    // shipped fits.json reads the same from a clone in any folder.
+    CHECK(m["path"] == "members/" + m["slug"].get<std::string>() + "/member.h5");
     const bool good = m["slug"] != "unstable" && m["slug"] != "missing";
     CHECK(m["fits"]["response"]["ok"] == good);
     CHECK(m["fits"]["recovery"]["ok"] == good);
