@@ -5,6 +5,7 @@
 
 #include "solver/app/cli_support.hpp"
 #include "solver/lbm/bench.hpp"
+#include "solver/run/bench_member3d.hpp"
 #include "solver/scene/memory_estimate.hpp"
 #include "solver/run/run_member.hpp"
 #include "solver/scene/scene.hpp"
@@ -46,17 +47,20 @@ int main(int argc, char** argv) {
     std::string what;
     bool quick = false;
     int threads = 0;
-    app.add_option("what", what, "what to benchmark: lbm")->required()->check(CLI::IsMember({"lbm"}));
+    app.add_option("what", what, "what to benchmark: lbm (the fluid kernels), member3d (a step of the default 3D member, by part)")
+        ->required()
+        ->check(CLI::IsMember({"lbm", "member3d"}));
     app.add_flag("--quick", quick, "fewer steps per measurement");
     app.add_option("--threads", threads, "largest thread count to try (0 = all cores)")
         ->check(capsule::cli::whole_number_at_least(0));
     if (const int code = capsule::cli::parse_or_exit_code(app, argc - 1, argv + 1); code >= 0) return code;
-    return capsule::lbm::bench_lbm(quick, threads);
+    return what == "member3d" ? capsule::bench_member3d(quick, threads) : capsule::lbm::bench_lbm(quick, threads);
   }
   CLI::App app{"capsule: one capsule in shear flow (IB + MRT lattice Boltzmann + membrane FEM)\n"
                "  capsule SCENE.json -o MEMBER.h5   run one scene\n"
                "  capsule check SCENE.json          validate a scene\n"
-               "  capsule bench lbm                 fluid benchmark"};
+               "  capsule bench lbm                 fluid benchmark\n"
+               "  capsule bench member3d            3D step benchmark, by part"};
   app.footer(exit_codes);
   capsule::RunOptions opt;
   app.add_option("scene", opt.scene_path, "scene JSON file")->required()->check(CLI::ExistingFile);

@@ -67,7 +67,9 @@ static_assert(sizeof(m3::Vec3) == 3 * sizeof(double), "membrane positions are us
 double shear_modulus_3d(const Scene& s, const Units& u) { return s.law == "neo-hookean" ? u.E_s / 3.0 : u.E_s; }
 
 struct Timings {
-  double fluid = 0, coupling = 0, power_law = 0;
+  // Wall seconds: the fluid step; spreading, interpolation and the position update; the
+  // viscosity field (contrast and power law, V != 1 or K > 0); its power-law part alone.
+  double fluid = 0, coupling = 0, power_law = 0, viscosity = 0;
 };
 
 class Simulation3D {
@@ -127,9 +129,13 @@ class Simulation3D {
     const double* u[3] = {fluid_.velocity(0), fluid_.velocity(1), fluid_.velocity(2)};
     ib::interpolate<3>(grid_, u, positions(), n, U_.data(), kernel_);  // (19)
     ib::advance<3>(positions(), U_.data(), n, 1.0);           // (20)
-    if (contrast_ || power_law_) update_viscosity();
-    timings_.coupling += std::chrono::duration<double>((t1 - t0) + (Clock::now() - t2)).count();
+    auto t3 = Clock::now();
+    timings_.coupling += std::chrono::duration<double>((t1 - t0) + (t3 - t2)).count();
     timings_.fluid += std::chrono::duration<double>(t2 - t1).count();
+    if (contrast_ || power_law_) {
+      update_viscosity();
+      timings_.viscosity += std::chrono::duration<double>(Clock::now() - t3).count();
+    }
     ++steps_;
   }
 
@@ -202,7 +208,7 @@ class Simulation3D {
     a.put_integer("sim.steps", steps_);
     const auto& mt = forces_.timings();
     a.put("sim.seconds", std::vector<double>{timings_.fluid, timings_.coupling, timings_.power_law, mt.elastic_s,
-                                             mt.curvature_s, mt.bending_s});
+                                             mt.curvature_s, mt.bending_s, timings_.viscosity});
     if (contrast_) {
       std::vector<std::int64_t> inside;
       const auto& flags = contrast_->inside_flags();
@@ -233,8 +239,8 @@ class Simulation3D {
     phase_.restore(a.doubles("sim.phase"));
     steps_ = static_cast<long>(a.integer("sim.steps"));
     const auto& t = a.doubles("sim.seconds");
-    if (t.size() == 6) {
-      timings_ = {t[0], t[1], t[2]};
+    if (t.size() >= 6) {  // 6: a restart point from before the viscosity column
+      timings_ = {t[0], t[1], t[2], t.size() >= 7 ? t[6] : 0.0};
       forces_.set_timings({t[3], t[4], t[5]});
     }
     if (contrast_) {
@@ -402,6 +408,9 @@ class Simulation3D {
   Timings timings_;
 };
 
+// Seconds of one part of a step: the difference of an accumulated timer over the measurement.
+double per_step(double after, double before, long steps) { return steps > 0 ? (after - before) / double(steps) : 0.0; }
+
 std::string snapshot_path(const std::string& member_path, double kt) {
   std::string base = member_path;
   if (base.size() > 3 && base.substr(base.size() - 3) == ".h5") base.resize(base.size() - 3);
@@ -411,6 +420,31 @@ std::string snapshot_path(const std::string& member_path, double kt) {
 }
 
 }  // namespace
+
+StepSplit3D time_steps3d(const Scene& scene, long warmup_steps, long steps) {
+  Simulation3D sim(scene);
+  const double factor = Protocol(scene).shear_factor(0.0);
+  for (long i = 0; i < warmup_steps; ++i) sim.step(factor);
+  const Timings t0 = sim.timings();
+  const m3::MembraneTimings m0 = sim.membrane_timings();
+  const auto start = Clock::now();
+  for (long i = 0; i < steps; ++i) sim.step(factor);
+  StepSplit3D r;
+  r.steps = steps;
+  r.total = steps > 0 ? std::chrono::duration<double>(Clock::now() - start).count() / double(steps) : 0.0;
+  const Timings& t1 = sim.timings();
+  const m3::MembraneTimings& m1 = sim.membrane_timings();
+  r.fluid = per_step(t1.fluid, t0.fluid, steps);
+  r.coupling = per_step(t1.coupling, t0.coupling, steps);
+  r.viscosity = per_step(t1.viscosity, t0.viscosity, steps);
+  r.elastic = per_step(m1.elastic_s, m0.elastic_s, steps);
+  r.curvature = per_step(m1.curvature_s, m0.curvature_s, steps);
+  r.bending = per_step(m1.bending_s, m0.bending_s, steps);
+  r.vertices = sim.mesh().vertex_count();
+  r.nodes = static_cast<double>(scene.grid()[0]) * scene.grid()[1] * scene.grid()[2];
+  r.tau = sim.units().tau;
+  return r;
+}
 
 std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, const RunControl& control) {
   Simulation3D sim(scene);
@@ -461,6 +495,7 @@ std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, const Ru
   out.set_attribute("seconds_fluid", sim.timings().fluid);
   out.set_attribute("seconds_coupling", sim.timings().coupling);
   out.set_attribute("seconds_power_law", sim.timings().power_law);
+  out.set_attribute("seconds_viscosity", sim.timings().viscosity);
   out.set_attribute("seconds_membrane_elastic", sim.membrane_timings().elastic_s);
   out.set_attribute("seconds_membrane_curvature", sim.membrane_timings().curvature_s);
   out.set_attribute("seconds_membrane_bending", sim.membrane_timings().bending_s);

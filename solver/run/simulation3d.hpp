@@ -1,5 +1,6 @@
 #pragma once
 // The 3D member: D3Q19 fluid, triangulated FEM membrane, immersed boundary coupling.
+#include <cstddef>
 #include <string>
 
 #include "solver/io/member_file.hpp"
@@ -7,6 +8,16 @@
 #include "solver/scene/scene.hpp"
 
 namespace capsule {
+// Seconds per lattice step of a 3D member, by part (`capsule bench member3d`): measured over
+// `steps` steps of the scene's shear after `warmup_steps`, at the caller's OpenMP thread count.
+struct StepSplit3D {
+  long steps = 0;
+  double total = 0, fluid = 0, coupling = 0, viscosity = 0, elastic = 0, curvature = 0, bending = 0;
+  std::size_t vertices = 0;
+  double nodes = 0, tau = 0;
+};
+StepSplit3D time_steps3d(const Scene& scene, long warmup_steps, long steps);
+
 // Runs the scene to the end of its protocol, appending rows to `out`.
 // Returns the final status: "complete" or "unstable at kt = X: reason".
 std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, const RunControl& control);

@@ -378,3 +378,23 @@ TEST_CASE("single precision is selectable in a 3D scene and agrees with double",
   CHECK(std::abs(Ds / Dd - 1.0) < 1e-3);
   CHECK(std::abs(s.series.at("volume_drift").back() - d.series.at("volume_drift").back()) < 1e-4);
 }
+
+TEST_CASE("the 3D step split names every part of a step and times the viscosity field only where one exists",
+          "[capsule3d]") {
+  omp_set_num_threads(1);
+  for (double V : {1.0, 5.0}) {
+    INFO("V = " << V);
+    nlohmann::json j = nlohmann::json::parse(sphere_scene(0.05, 4.0, 2, 1.0, 0, 0.05, V));
+    j["E_b"] = 0.025;  // the bending parts run too
+    const Scene scene = Scene::from_json(j, "step_split");
+    const StepSplit3D s = time_steps3d(scene, 2, 10);
+    CHECK(s.steps == 10);
+    CHECK(s.vertices == 162);  // level 2
+    CHECK(s.nodes == 40.0 * 40.0 * 32.0);
+    for (double part : {s.fluid, s.coupling, s.elastic, s.curvature, s.bending}) CHECK(part > 0);
+    // The parts are disjoint intervals inside the timed steps: their sum cannot exceed the step.
+    CHECK(s.fluid + s.coupling + s.viscosity + s.elastic + s.curvature + s.bending <= s.total * (1 + 1e-9));
+    if (V == 1.0) CHECK(s.viscosity == 0.0);
+    else CHECK(s.viscosity > 0.0);
+  }
+}
