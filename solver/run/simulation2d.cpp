@@ -286,7 +286,7 @@ std::string Simulation2D::health(const std::map<std::string, double>& r) const {
     if (!std::isfinite(x)) return "NaN in membrane positions";
   std::ostringstream why;
   if (r.at("stretch_max") > max_stretch) why << "a segment stretched to " << r.at("stretch_max") << " (bound " << max_stretch << ")";
-  else if (r.at("stretch_min") < 1.0 / max_stretch) why << "a segment compressed to " << r.at("stretch_min") << " (bound " << 1.0 / max_stretch << ")";
+  else if (r.at("stretch_min") < min_stretch) why << "a segment compressed to " << r.at("stretch_min") << " (bound " << min_stretch << ")";
   else if (std::abs(r.at("area_drift")) > max_area_drift) why << "area drift " << r.at("area_drift") << " (bound " << max_area_drift << ")";
   else if (r.at("max_speed") > max_speed) why << "fluid speed " << r.at("max_speed") << " (bound " << max_speed << ")";
   return why.str();

@@ -65,9 +65,15 @@ class Simulation2D {
   double viscosity_at(double x, double y) const;
 
   // Health bounds (README): a segment stretched beyond max_stretch or compressed below
-  // 1/max_stretch, the enclosed area drifting by more than max_area_drift, or a lattice speed
+  // min_stretch, the enclosed area drifting by more than max_area_drift, or a lattice speed
   // above max_speed (Mach ~ 0.35, where the LBM is no longer a Navier-Stokes solver).
+  // The compression bound is not 1/max_stretch: a bending-free Hookean membrane (30) really
+  // compresses that far. Fig. 1's member Ca = 0.4, E_b = 0 reaches stretch_min 0.36 / 0.35 /
+  // 0.35 at kt = 3 with 70 / 140 / 280 segments (a = 10: resolved, not a zig-zag of the mesh),
+  // 0.40 at a = 20, and then tank-treads with stretch_min 0.38-0.58; a bound of 1/3 ended it
+  // at kt = 3.1. 0.1 still catches a collapsing segment.
   static constexpr double max_stretch = 3.0;
+  static constexpr double min_stretch = 0.1;
   static constexpr double max_area_drift = 0.05;
   static constexpr double max_speed = 0.2;
 
