@@ -1,4 +1,7 @@
 #include "study/campaign_runner.hpp"
+#include "study/campaign_error.hpp"
+
+#include <algorithm>
 
 #include <cerrno>
 #include <cstdlib>
@@ -103,6 +106,18 @@ void print_status(const CampaignSurvey& survey, std::ostream& out) {
 
 RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
   CampaignSurvey survey = survey_campaign(request.campaign_file, request.results_dir);
+  // --case: every name must be a case of the campaign (checked before anything is written).
+  for (const auto& name : request.cases) {
+    std::string known;
+    bool found = false;
+    for (const auto& c : survey.campaign.cases) {
+      known += (known.empty() ? "" : ", ") + c.name;
+      found = found || c.name == name;
+    }
+    if (!found)
+      throw campaign_error(request.campaign_file, "cases", "--case \"" + name + "\" names no case of this campaign",
+                           known.empty() ? "no --case: this campaign has no cases" : "one of: " + known);
+  }
   const fs::path capsule_binary = find_capsule_binary();
   // The job list has one member directory per line; the wrapper names the capsule binary.
   require_script_safe("the results folder", survey.layout.root);
@@ -115,9 +130,17 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
   RunLock lock(survey.layout.lock_file(), survey.layout.running_info(), running);
   prepare_member_directories(survey);
 
+  const auto selected = [&](const Member& m) {
+    if (request.cases.empty()) return true;
+    for (const auto& name : request.cases)
+      if (m.case_name == name || std::find(m.other_cases.begin(), m.other_cases.end(), name) != m.other_cases.end())
+        return true;
+    return false;
+  };
   std::vector<std::size_t> to_run;
   bool any_3d = false;
   for (std::size_t i = 0; i < survey.members.size(); ++i) {
+    if (!selected(survey.members[i])) continue;
     if (!needs_run(survey.conditions[i], request.rerun_unstable, request.rerun_stopped)) continue;
     to_run.push_back(i);
     any_3d = any_3d || survey.members[i].scene.at("dim").get<int>() == 3;

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "study/campaign_survey.hpp"
 
@@ -22,6 +23,7 @@ struct RunRequest {
   bool rerun_unstable = false;   // also rerun members whose file says unstable
   bool rerun_stopped = false;    // also rerun members whose file says stopped (a configuration the solver refused)
   bool progress_bar = false;     // redraw the campaign's progress line in place (the app sets it on a terminal)
+  std::vector<std::string> cases;  // run only the members of these cases (empty: every member)
 };
 
 struct RunOutcome {

@@ -56,6 +56,8 @@ int main_body(int argc, char** argv) {
   run->add_flag("--rerun-unstable", run_request.rerun_unstable, "also rerun members that ended unstable");
   run->add_flag("--rerun-stopped", run_request.rerun_stopped,
                 "also rerun members that stopped (the solver refused their configuration)");
+  run->add_option("--case", run_request.cases,
+                  "run only the members of this case (repeatable; e.g. the 2D case of a campaign with 2D and 3D cases)");
   run->add_option("--results", results_dir, "results folder")->capture_default_str();
 
   std::string status_file;
