@@ -3,7 +3,8 @@
 namespace capsule::membrane3d {
 
 void HelfrichBending::add_forces(const Curvatures& k, const LaplaceBeltrami& lb, std::vector<Vec3>& force) const {
-  const std::vector<double> lap = lb.apply(k.mean);
+  std::vector<double>& lap = laplacian_;
+  lb.apply(k.mean, lap);
   const auto& area = lb.areas();
   const int nv = static_cast<int>(force.size());
   for (int p = 0; p < nv; ++p) {

@@ -37,6 +37,7 @@ class HelfrichBending {
  private:
   double E_B_ = 0;
   std::vector<double> c0_;
+  mutable std::vector<double> laplacian_;  // scratch of add_forces, kept so a step allocates nothing
 };
 
 // Volume penalty (84): an isotropic pressure -K_v (V_c - V_c0)/V_c0 along the outward normal

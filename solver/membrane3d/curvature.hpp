@@ -26,5 +26,7 @@ struct Curvatures {
 // millisecond and an OpenMP fork on shared cores costs more than it saves. The local frame (73)-(75) uses the averaged
 // triangle normal; `passes` > 1 repeats the fit in the frame of the improved normal (80).
 Curvatures fit_curvatures(const Mesh& mesh, int passes = 1);
+// The same into `out`, reusing its storage (a member's step allocates nothing).
+void fit_curvatures(const Mesh& mesh, Curvatures& out, int passes = 1);
 
 }  // namespace capsule::membrane3d

@@ -25,12 +25,13 @@ void MembraneForces::compute(const Mesh& current, std::vector<Vec3>& force) {
   timings_.elastic_s += seconds_since(t0);
   if (!needs_curvature()) return;
   t0 = std::chrono::steady_clock::now();
-  const Curvatures k = fit_curvatures(current);
-  const LaplaceBeltrami lb(current);
+  // Into storage kept from the last step: the step allocates nothing.
+  fit_curvatures(current, curvatures_);
+  laplace_beltrami_.update(current);
   timings_.curvature_s += seconds_since(t0);
   t0 = std::chrono::steady_clock::now();
-  if (E_B_ > 0) bending_.add_forces(k, lb, force);
-  if (K_v_ > 0) add_volume_penalty(K_v_, enclosed_volume(current), volume0_, k, lb.areas(), force);
+  if (E_B_ > 0) bending_.add_forces(curvatures_, laplace_beltrami_, force);
+  if (K_v_ > 0) add_volume_penalty(K_v_, enclosed_volume(current), volume0_, curvatures_, laplace_beltrami_.areas(), force);
   timings_.bending_s += seconds_since(t0);
 }
 

@@ -43,6 +43,8 @@ class MembraneForces {
   HelfrichBending bending_;
   double E_B_ = 0, K_v_ = 0, volume0_ = 0;
   MembraneTimings timings_;
+  Curvatures curvatures_;             // of the last step, storage reused
+  LaplaceBeltrami laplace_beltrami_;  // of the last step, storage reused
 };
 
 }  // namespace capsule::membrane3d

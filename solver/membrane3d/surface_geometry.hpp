@@ -14,6 +14,7 @@ double surface_area(const Mesh& mesh);
 double enclosed_volume(const Mesh& mesh);
 // Unweighted average of the outward unit normals of the incident triangles (Sec. 2.5.4).
 std::vector<Vec3> averaged_vertex_normals(const Mesh& mesh);
+void averaged_vertex_normals(const Mesh& mesh, std::vector<Vec3>& out);  // reusing out's storage
 
 // Voronoi area (83) of every vertex, a_vor = (1/8) sum (cot alpha_j + cot beta_j) |x_p - x_j|^2.
 // For an obtuse triangle the circumcentre leaves the triangle and (83) over-counts; there the
@@ -21,6 +22,7 @@ std::vector<Vec3> averaged_vertex_normals(const Mesh& mesh);
 // half the triangle's area to the obtuse corner and a quarter to each other one. The mixed
 // areas of all vertices sum exactly to the surface area.
 std::vector<double> voronoi_areas(const Mesh& mesh);
+void voronoi_areas(const Mesh& mesh, std::vector<double>& out);  // reusing out's storage
 
 // Cotangent Laplace-Beltrami operator (81)-(82):
 //   (Delta f)(p) = (1 / a_vor(p)) sum_j (cot alpha_j + cot beta_j)/2 (f_j - f_p).
@@ -31,12 +33,18 @@ class LaplaceBeltrami {
   LaplaceBeltrami() = default;
   // Computes the cotangent weights and Voronoi areas for the current positions.
   explicit LaplaceBeltrami(const Mesh& mesh);
+  // The same for new positions of a mesh of the same topology, reusing the storage.
+  void update(const Mesh& mesh);
   std::vector<double> apply(const std::vector<double>& f) const;
+  void apply(const std::vector<double>& f, std::vector<double>& out) const;
   const std::vector<double>& areas() const { return area_; }
 
  private:
-  std::vector<std::vector<double>> weight_;  // per vertex, per ring neighbour: (cot a + cot b)/2
-  std::vector<std::vector<int>> ring_;
+  // Per vertex, per ring neighbour: (cot a + cot b)/2, flat; vertex v's run starts at
+  // offset_[v] and follows mesh.ring[v] (neighbour_ holds the same indices, flat).
+  std::vector<double> weight_;
+  std::vector<int> neighbour_;
+  std::vector<std::size_t> offset_;
   std::vector<double> area_;
 };
 
