@@ -59,6 +59,9 @@ inline void for_each_support_node(const Grid& grid, const double* X, Kernel kern
 template <int Dim>
 void interpolate(const Grid& grid, const double* const* u, const double* X, std::size_t n, double* U,
                  Kernel kernel = Kernel::cosine) {
+  // Each node sums its own support in a fixed order: threads do not change the result. From
+  // ~2000 nodes (a 3D mesh at level 4); a 2D membrane's 140 segments stay on one thread.
+#pragma omp parallel for schedule(static) if (n > 2048)
   for (std::size_t c = 0; c < n; ++c) {
     double acc[Dim] = {};
     for_each_support_node<Dim>(grid, X + Dim * c, kernel, [&](std::size_t node, double w) {
