@@ -140,7 +140,10 @@ std::vector<DistinctMember> distinct_members(const std::vector<MemberAnalysis>& 
 
 std::string cases_label(const std::vector<std::string>& cases) {
   std::string out;
-  for (const auto& c : cases) out += (out.empty() ? "" : "/") + case_label(c);
+  for (const auto& c : cases) {
+    if (!out.empty()) out += '/';
+    out += case_label(c);
+  }
   return out.empty() ? case_label("") : out;
 }
 

@@ -62,7 +62,12 @@ Table time_table(const TableSpec& spec, const std::vector<MemberAnalysis>& membe
     std::string extra;
     for (const auto& name : varying[m.ref.case_name])
       extra += (extra.empty() ? "" : ", ") + name + " = " + format_number(parameter(m, name));
-    if (!extra.empty()) label += (label.empty() ? "" : " ") + ("(" + extra + ")");
+    if (!extra.empty()) {
+      if (!label.empty()) label += ' ';
+      label += '(';
+      label += extra;
+      label += ')';
+    }
     return label;
   };
   for (const auto* m : ordered(members, spec.x)) {
