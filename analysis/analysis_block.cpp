@@ -58,7 +58,158 @@ void check_column(const std::string& column, const std::vector<std::string>& fit
     fail(where, path, "the fit \"" + fit + "\" is not listed in /analysis/fits");
 }
 
+// A quantity for the ladder and accuracy analyses: a fitted time of a listed fit or a marker.
+void check_quantity(const std::string& q, const std::vector<std::string>& fits, const std::string& where,
+                    const std::string& path) {
+  const auto& markers = marker_quantities();
+  if (std::find(markers.begin(), markers.end(), q) != markers.end()) return;
+  if (q.find('.') == std::string::npos)
+    fail(where, path, "expected a marker (D_stop, D_max, D_inf) or \"<fit>.<time>\"; got \"" + q + "\"");
+  check_column(q, fits, where, path);
+}
+
+double a_number(const nlohmann::json& j, const std::string& where, const std::string& path) {
+  if (!j.is_number()) fail(where, path, "expected a number");
+  return j.get<double>();
+}
+
+// A dotted scene key such as "resolution.a": letters, digits and _ between dots.
+std::string a_dotted_key(const nlohmann::json& j, const std::string& where, const std::string& path) {
+  static const std::regex key_pattern("[A-Za-z_][A-Za-z0-9_]*(\\.[A-Za-z_][A-Za-z0-9_]*)*");
+  const std::string key = a_string(j, where, path);
+  if (!std::regex_match(key, key_pattern))
+    fail(where, path, "expected a dotted scene key such as \"resolution.a\"; got \"" + key + "\"");
+  return key;
+}
+
+std::vector<std::string> quantities_of(const nlohmann::json& e, const std::vector<std::string>& fits,
+                                       const std::string& where, const std::string& path) {
+  if (!e.contains("quantities")) return default_quantities(fits);
+  auto q = string_array(e["quantities"], where, path + "/quantities", true);
+  for (std::size_t i = 0; i < q.size(); ++i) check_quantity(q[i], fits, where, path + "/quantities/" + std::to_string(i));
+  return q;
+}
+
+LadderSpec parse_ladder(const nlohmann::json& e, const std::vector<std::string>& fits, const std::string& where,
+                        const std::string& path) {
+  if (!e.is_object()) fail(where, path, "expected an object with key[, spacing, quantities, cases, name, assumed_order]");
+  only_keys(e, {"name", "key", "spacing", "quantities", "cases", "assumed_order"}, where, path);
+  if (!e.contains("key")) fail(where, path + "/key", "required key missing (e.g. \"resolution.a\")");
+  LadderSpec spec;
+  spec.key = a_dotted_key(e["key"], where, path + "/key");
+  const std::string last = spec.key.substr(spec.key.rfind('.') + 1);
+  if (e.contains("spacing")) {
+    spec.spacing = a_string(e["spacing"], where, path + "/spacing");
+    if (spec.spacing != "1/x" && spec.spacing != "2^-x" && spec.spacing != "x")
+      fail(where, path + "/spacing", "expected \"1/x\", \"2^-x\" or \"x\" (h from the key's value x)");
+  } else if (last == "a" || last == "segments") {
+    spec.spacing = "1/x";
+  } else if (last == "mesh_level") {
+    spec.spacing = "2^-x";
+  } else {
+    fail(where, path + "/spacing",
+         "required for key \"" + spec.key + "\": \"1/x\", \"2^-x\" or \"x\" (h from the key's value x)");
+  }
+  spec.name = e.contains("name") ? a_string(e["name"], where, path + "/name") : "ladder_" + last;
+  static const std::regex name_pattern("[A-Za-z0-9_-]+");
+  if (!std::regex_match(spec.name, name_pattern))
+    fail(where, path + "/name", "expected letters, digits, _ or - (it names files)");
+  spec.quantities = quantities_of(e, fits, where, path);
+  if (e.contains("cases")) spec.cases = string_array(e["cases"], where, path + "/cases", true);
+  if (e.contains("assumed_order")) {
+    spec.assumed_order = a_number(e["assumed_order"], where, path + "/assumed_order");
+    if (!(spec.assumed_order > 0.0 && spec.assumed_order <= 8.0))
+      fail(where, path + "/assumed_order", "expected an order in (0, 8]");
+  }
+  return spec;
+}
+
+AccuracySpec parse_accuracy(const nlohmann::json& a, const std::vector<std::string>& fits,
+                            const std::vector<LadderSpec>& ladders, const std::string& where) {
+  const std::string path = "/accuracy";
+  if (!a.is_object()) fail(where, path, "expected an object with reference[, quantities, settings, bounds]");
+  only_keys(a, {"quantities", "settings", "reference", "bounds"}, where, path);
+  AccuracySpec spec;
+  spec.quantities = quantities_of(a, fits, where, path);
+  spec.settings = default_setting_keys();
+  if (a.contains("settings")) {
+    if (!a["settings"].is_array() || a["settings"].empty())
+      fail(where, path + "/settings", "expected a non-empty array of dotted scene keys");
+    spec.settings.clear();
+    for (std::size_t i = 0; i < a["settings"].size(); ++i)
+      spec.settings.push_back(a_dotted_key(a["settings"][i], where, path + "/settings/" + std::to_string(i)));
+  }
+  if (!a.contains("reference")) fail(where, path + "/reference", "required key missing (an array of reference objects)");
+  const auto& r = a["reference"];
+  if (!r.is_array() || r.empty()) fail(where, path + "/reference", "expected a non-empty array of reference objects");
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const std::string rp = path + "/reference/" + std::to_string(i);
+    const auto& e = r[i];
+    if (!e.is_object()) fail(where, rp, "expected an object: {\"case\": ..., \"<quantity>\": number, ...} or {\"ladder\": name}");
+    ReferenceSpec ref;
+    for (const auto& [key, value] : e.items()) {
+      if (key == "case") ref.case_name = a_string(value, where, rp + "/case");
+      else if (key == "ladder") {
+        ref.ladder = a_string(value, where, rp + "/ladder");
+        if (std::none_of(ladders.begin(), ladders.end(), [&](const LadderSpec& l) { return l.name == ref.ladder; }))
+          fail(where, rp + "/ladder", "no ladder named \"" + ref.ladder + "\" in /analysis/ladder");
+      } else {
+        if (std::find(spec.quantities.begin(), spec.quantities.end(), key) == spec.quantities.end())
+          fail(where, rp + "/" + key, "not one of the accuracy quantities (/analysis/accuracy/quantities), nor case or ladder");
+        ref.values[key] = a_number(value, where, rp + "/" + key);
+      }
+    }
+    if (ref.values.empty() && ref.ladder.empty())
+      fail(where, rp, "expected reference values (\"<quantity>\": number) or \"ladder\": <ladder name>");
+    spec.reference.push_back(ref);
+  }
+  if (a.contains("bounds")) {
+    if (!a["bounds"].is_array() || a["bounds"].empty()) fail(where, path + "/bounds", "expected a non-empty array of relative errors");
+    spec.bounds.clear();
+    for (std::size_t i = 0; i < a["bounds"].size(); ++i) {
+      const double b = a_number(a["bounds"][i], where, path + "/bounds/" + std::to_string(i));
+      if (!(b > 0.0 && b < 1.0))
+        fail(where, path + "/bounds/" + std::to_string(i), "expected a relative error in (0, 1), e.g. 0.01 for 1 %");
+      spec.bounds.push_back(b);
+    }
+  }
+  return spec;
+}
+
+StabilitySpec parse_stability(const nlohmann::json& s, const std::string& where) {
+  const std::string path = "/stability";
+  if (!s.is_object()) fail(where, path, "expected an object with parameters");
+  only_keys(s, {"parameters"}, where, path);
+  if (!s.contains("parameters")) fail(where, path + "/parameters", "required key missing (the swept scene parameters)");
+  StabilitySpec spec;
+  spec.parameters = string_array(s["parameters"], where, path + "/parameters", true);
+  std::set<std::string> seen;
+  for (std::size_t i = 0; i < spec.parameters.size(); ++i)
+    if (!seen.insert(spec.parameters[i]).second)
+      fail(where, path + "/parameters/" + std::to_string(i), "\"" + spec.parameters[i] + "\" listed twice");
+  return spec;
+}
+
 }  // namespace
+
+const std::vector<std::string>& marker_quantities() {
+  static const std::vector<std::string> q{"D_stop", "D_max", "D_inf"};
+  return q;
+}
+
+std::vector<std::string> default_quantities(const std::vector<std::string>& fits) {
+  std::vector<std::string> q{"D_stop"};
+  for (const auto& f : fits)
+    for (const auto& t : times_of_fit(f)) q.push_back(f + "." + t);
+  return q;
+}
+
+const std::vector<std::string>& default_setting_keys() {
+  static const std::vector<std::string> keys{"resolution.a",      "resolution.mesh_level", "resolution.segments",
+                                             "resolution.tau",    "resolution.kernel",     "resolution.precision",
+                                             "resolution.domain", "Re"};
+  return keys;
+}
 
 const std::vector<std::string>& known_fits() {
   static const std::vector<std::string> fits{"response", "recovery", "two_phase", "double_exponential",
@@ -78,7 +229,8 @@ AnalysisBlock parse_analysis_block(const nlohmann::json& block, const std::strin
   AnalysisBlock out;
   if (block.is_null()) return out;
   if (!block.is_object()) fail(where, "", "expected an object");
-  only_keys(block, {"fits", "parameters", "tables", "bilinear", "figures"}, where, "");
+  only_keys(block, {"fits", "parameters", "tables", "bilinear", "ladder", "accuracy", "stability", "figures"}, where,
+            "");
 
   if (block.contains("fits")) {
     out.fits = string_array(block["fits"], where, "/fits", false);
@@ -157,6 +309,26 @@ AnalysisBlock parse_analysis_block(const nlohmann::json& block, const std::strin
     }
     out.bilinear = spec;
   }
+
+  if (block.contains("ladder")) {
+    // One ladder object, or an array of them (e.g. one in resolution.a, one in resolution.mesh_level).
+    const auto& l = block["ladder"];
+    std::set<std::string> names;
+    auto add = [&](const nlohmann::json& e, const std::string& path) {
+      out.ladders.push_back(parse_ladder(e, out.fits, where, path));
+      if (!names.insert(out.ladders.back().name).second)
+        fail(where, path + "/name", "ladder name \"" + out.ladders.back().name + "\" used twice");
+    };
+    if (l.is_array()) {
+      if (l.empty()) fail(where, "/ladder", "expected a ladder object or a non-empty array of them");
+      for (std::size_t i = 0; i < l.size(); ++i) add(l[i], "/ladder/" + std::to_string(i));
+    } else {
+      add(l, "/ladder");
+    }
+  }
+
+  if (block.contains("accuracy")) out.accuracy = parse_accuracy(block["accuracy"], out.fits, out.ladders, where);
+  if (block.contains("stability")) out.stability = parse_stability(block["stability"], where);
 
   if (block.contains("figures")) {
     if (!block["figures"].is_boolean()) fail(where, "/figures", "expected true or false");

@@ -22,13 +22,53 @@ struct BilinearSpec {
   std::optional<double> V_base;      // for eta* (97)
 };
 
+// A resolution ladder (README "Resolution ladder"): members that differ only in `key`.
+struct LadderSpec {
+  std::string name;                     // file stem under ladder/; default "ladder_<last part of key>"
+  std::string key;                      // dotted scene key, e.g. "resolution.a"
+  std::string spacing;                  // h from the key's value x: "1/x", "2^-x" or "x"
+  std::vector<std::string> quantities;  // default_quantities() when not given
+  std::vector<std::string> cases;       // only members of these cases (empty: all)
+  double assumed_order = 1.0;           // order taken for a two-level ladder (first order in 1/a, DESIGN 3.2)
+};
+
+// A reference value for the accuracy table: given numbers, or a ladder's extrapolation.
+struct ReferenceSpec {
+  std::string case_name;                  // "" = every case
+  std::map<std::string, double> values;   // quantity -> reference value
+  std::string ladder;                     // name of a ladder of the block ("" = none)
+};
+
+struct AccuracySpec {
+  std::vector<std::string> quantities;    // default_quantities() when not given
+  std::vector<std::string> settings;      // dotted scene keys that make the "setting"
+  std::vector<ReferenceSpec> reference;
+  std::vector<double> bounds{0.01, 0.02, 0.05};  // relative errors for "cheapest within"
+};
+
+struct StabilitySpec {
+  std::vector<std::string> parameters;    // swept scene parameters (names as in tables[].x)
+};
+
 struct AnalysisBlock {
   std::vector<std::string> fits{"response", "recovery"};
   std::map<std::string, std::string> parameters;  // name -> JSON pointer into the canonical scene
   std::vector<TableSpec> tables;
   std::optional<BilinearSpec> bilinear;
+  std::vector<LadderSpec> ladders;
+  std::optional<AccuracySpec> accuracy;
+  std::optional<StabilitySpec> stability;
   bool figures = true;
 };
+
+// Member quantities the ladder and accuracy analyses compare: "<fit>.<time>" of a listed
+// fit, or a marker: "D_stop" (D_xy when the shear stopped: the steady D_xy of a shear to
+// steady state), "D_max", "D_inf".
+const std::vector<std::string>& marker_quantities();
+// D_stop and every time of the block's fits.
+std::vector<std::string> default_quantities(const std::vector<std::string>& fits);
+// The setting keys an accuracy block compares by default.
+const std::vector<std::string>& default_setting_keys();
 
 // Every per-member fit name, and the times each one yields.
 const std::vector<std::string>& known_fits();

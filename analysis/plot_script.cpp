@@ -134,6 +134,52 @@ for s in data.get("slices", []):
     fig.tight_layout()
     fig.savefig(os.path.join(out, "member_" + s["slug"] + "_slices.png"), dpi=120)
     plt.close(fig)
+
+# Accuracy against cost (block "accuracy"): relative error against core-seconds, log-log,
+# every setting labelled, the non-dominated settings joined.
+for a in data.get("accuracy", []):
+    fig, ax = plt.subplots(figsize=(5.5, 3.8))
+    p = a["points"]
+    ax.loglog(p["cost"], p["error"], "o", color="0.45", label="settings")
+    for x, y, label in zip(p["cost"], p["error"], p["label"]):
+        ax.annotate(label, (x, y), fontsize=6, xytext=(3, 3), textcoords="offset points")
+    f = a["front"]
+    if f["cost"]:
+        ax.loglog(f["cost"], f["error"], "-o", color="tab:red", lw=1.2, label="non-dominated")
+    ax.set_xlabel("cost (core-seconds)")
+    ax.set_ylabel("relative error")
+    ax.set_title(a["title"], fontsize=8)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, a["name"] + ".png"), dpi=120)
+    plt.close(fig)
+
+# Stability (block "stability"): complete and unstable members per pair of swept
+# parameters, the kt of blow-up beside each unstable point; log axes for wide positive ranges.
+for s in data.get("stability", []):
+    fig, ax = plt.subplots(figsize=(5.0, 3.8))
+    c, u, o = s["complete"], s["unstable"], s["other"]
+    if c["x"]:
+        ax.plot(c["x"], c["y"], "o", color="tab:green", label="complete")
+    if u["x"]:
+        ax.plot(u["x"], u["y"], "x", color="tab:red", ms=8, mew=2, label="unstable")
+        for x, y, kt in zip(u["x"], u["y"], u["kt"]):
+            if kt is not None:
+                ax.annotate("kt = %g" % kt, (x, y), fontsize=6, xytext=(4, -8), textcoords="offset points")
+    if o["x"]:
+        ax.plot(o["x"], o["y"], "s", color="0.5", mfc="none", label="stopped / no result")
+    for axis, key in (("x", "x"), ("y", "y")):
+        values = c[key] + u[key] + o[key]
+        if values and min(values) > 0 and max(values) / min(values) >= 20:
+            (ax.set_xscale if axis == "x" else ax.set_yscale)("log")
+    ax.set_xlabel(s["x"])
+    ax.set_ylabel(s["y"])
+    ax.set_title("stability: " + s["x"] + " and " + s["y"], fontsize=8)
+    if c["x"] or u["x"] or o["x"]:
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, s["name"] + ".png"), dpi=120)
+    plt.close(fig)
 )py";
   return text;
 }

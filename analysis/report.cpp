@@ -44,6 +44,7 @@ ReportSummary write_report(const ReportRequest& request) {
 
   std::set<std::string> wanted{"Ca", "E_b", "V", "eta"};
   for (const auto& t : block.tables) wanted.insert(t.x);
+  if (block.stability) wanted.insert(block.stability->parameters.begin(), block.stability->parameters.end());
   const ReportContext context{request, block, analyse_members(request, block, wanted)};
 
   ReportOutputs outputs;
@@ -56,6 +57,9 @@ ReportSummary write_report(const ReportRequest& request) {
   sections.push_back(time_tables_section());
   sections.push_back(bilinear_section());
   sections.push_back(artificial_viscosity_section());
+  sections.push_back(ladder_section());
+  sections.push_back(accuracy_section());
+  sections.push_back(stability_section());
   for (const auto& section : sections) section->write(context, out, outputs);
   outputs.write_text(out / "fits.json", outputs.fits.dump(2) + "\n");
 

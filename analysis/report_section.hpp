@@ -37,5 +37,8 @@ std::unique_ptr<ReportSection> slices_section();               // slices_section
 std::unique_ptr<ReportSection> time_tables_section();          // time_tables_section.cpp
 std::unique_ptr<ReportSection> bilinear_section();             // bilinear_section.cpp
 std::unique_ptr<ReportSection> artificial_viscosity_section(); // artificial_viscosity_section.cpp
+std::unique_ptr<ReportSection> ladder_section();               // ladder_section.cpp
+std::unique_ptr<ReportSection> accuracy_section();             // accuracy_section.cpp
+std::unique_ptr<ReportSection> stability_section();            // stability_section.cpp
 
 }  // namespace capsule::analysis

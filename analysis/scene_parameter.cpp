@@ -5,15 +5,26 @@
 namespace capsule::analysis {
 
 namespace {
-void collect(const nlohmann::json& j, const std::string& name, std::vector<const nlohmann::json*>& hits) {
+struct Hit {
+  const nlohmann::json* value;
+  std::string pointer;
+};
+void collect(const nlohmann::json& j, const std::string& name, const std::string& at, std::vector<Hit>& hits) {
   if (j.is_object()) {
     for (const auto& [key, value] : j.items()) {
-      if (key == name) hits.push_back(&value);
-      collect(value, name, hits);
+      const std::string here = at + "/" + key;
+      if (key == name) hits.push_back({&value, here});
+      collect(value, name, here, hits);
     }
   } else if (j.is_array()) {
-    for (const auto& value : j) collect(value, name, hits);
+    for (std::size_t i = 0; i < j.size(); ++i) collect(j[i], name, at + "/" + std::to_string(i), hits);
   }
+}
+std::string dotted_to_pointer(const std::string& dotted) {
+  std::string p = "/" + dotted;
+  for (char& c : p)
+    if (c == '.') c = '/';
+  return p;
 }
 }  // namespace
 
@@ -21,16 +32,19 @@ SceneValue scene_parameter(const nlohmann::json& scene, const std::string& name,
                            const std::map<std::string, std::string>& pointers) {
   SceneValue out;
   const nlohmann::json* hit = nullptr;
-  if (const auto it = pointers.find(name); it != pointers.end()) {
-    const nlohmann::json::json_pointer ptr(it->second);
+  const auto it = pointers.find(name);
+  if (it != pointers.end() || name.find('.') != std::string::npos) {
+    const std::string text = it != pointers.end() ? it->second : dotted_to_pointer(name);
+    const nlohmann::json::json_pointer ptr(text);
     if (!scene.contains(ptr)) {
-      out.reason = "scene has no " + it->second;
+      out.reason = "scene has no " + text;
       return out;
     }
     hit = &scene.at(ptr);
+    out.pointer = text;
   } else {
-    std::vector<const nlohmann::json*> hits;
-    collect(scene, name, hits);
+    std::vector<Hit> hits;
+    collect(scene, name, "", hits);
     if (hits.empty()) {
       out.reason = "scene has no key \"" + name + "\"";
       return out;
@@ -40,7 +54,8 @@ SceneValue scene_parameter(const nlohmann::json& scene, const std::string& name,
                    "\"; name one in /analysis/parameters";
       return out;
     }
-    hit = hits.front();
+    hit = hits.front().value;
+    out.pointer = hits.front().pointer;
   }
   if (!hit->is_number()) {
     out.reason = "scene parameter " + name + " is not a number";
@@ -48,6 +63,23 @@ SceneValue scene_parameter(const nlohmann::json& scene, const std::string& name,
   }
   out.found = true;
   out.value = hit->get<double>();
+  return out;
+}
+
+const nlohmann::json* scene_value_at(const nlohmann::json& scene, const std::string& dotted_key) {
+  const nlohmann::json::json_pointer ptr(dotted_to_pointer(dotted_key));
+  return scene.contains(ptr) ? &scene.at(ptr) : nullptr;
+}
+
+nlohmann::json scene_without(const nlohmann::json& scene, const std::string& pointer) {
+  nlohmann::json out = scene;
+  if (pointer.empty()) return out;
+  const nlohmann::json::json_pointer ptr(pointer);
+  if (!out.contains(ptr)) return out;
+  const nlohmann::json::json_pointer parent = ptr.parent_pointer();
+  nlohmann::json& holder = out.at(parent);
+  if (holder.is_object()) holder.erase(ptr.back());
+  else holder.at(ptr) = nullptr;
   return out;
 }
 

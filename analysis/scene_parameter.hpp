@@ -1,7 +1,7 @@
 #pragma once
 // Looks up a numeric scene parameter (Ca, E_b, V, eta, ...) in a canonical scene: by
-// the JSON pointer the analysis block gives for it, else as the one key of that name
-// anywhere in the scene.
+// the JSON pointer the analysis block gives for it, else, for a dotted name such as
+// "resolution.a", at that path, else as the one key of that name anywhere in the scene.
 #include <map>
 #include <string>
 
@@ -13,9 +13,17 @@ struct SceneValue {
   bool found = false;
   double value = 0.0;
   std::string reason;  // why not found (absent, ambiguous, not a number)
+  std::string pointer; // where it was found (a JSON pointer), also when it is not a number
 };
 
 SceneValue scene_parameter(const nlohmann::json& scene, const std::string& name,
                            const std::map<std::string, std::string>& pointers);
+
+// The value at a dotted key ("resolution.a"), or nullptr when the scene has none.
+const nlohmann::json* scene_value_at(const nlohmann::json& scene, const std::string& dotted_key);
+
+// The scene with the value at a JSON pointer removed (for grouping members that agree in
+// everything else); the scene itself when it has no such value.
+nlohmann::json scene_without(const nlohmann::json& scene, const std::string& pointer);
 
 }  // namespace capsule::analysis

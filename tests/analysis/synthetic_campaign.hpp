@@ -38,10 +38,15 @@ struct SyntheticMember {
   double sigma = 1e-4;               // noise on D_xy
   unsigned seed = 1;
   std::string status = "complete";
+  nlohmann::json resolution;         // written into the scene when not null (ladders, accuracy)
+  double wall_seconds = std::numeric_limits<double>::quiet_NaN();  // run-time attributes when set
+  long threads = 0;
 };
 
 inline nlohmann::json scene_of(const SyntheticMember& m) {
-  return {{"dim", 3}, {"Ca", m.Ca}, {"E_b", m.E_b}, {"V", m.V}, {"eta", m.eta}, {"Re", 0.05}};
+  nlohmann::json scene{{"dim", 3}, {"Ca", m.Ca}, {"E_b", m.E_b}, {"V", m.V}, {"eta", m.eta}, {"Re", 0.05}};
+  if (!m.resolution.is_null()) scene["resolution"] = m.resolution;
+  return scene;
 }
 
 inline void write_member(const std::string& path, const SyntheticMember& m) {
@@ -49,6 +54,8 @@ inline void write_member(const std::string& path, const SyntheticMember& m) {
   capsule::io::MemberWriter w(path);
   w.set_scene(scene_of(m));
   w.set_attribute("dim", 3L);
+  if (std::isfinite(m.wall_seconds)) w.set_attribute("wall_seconds", m.wall_seconds);
+  if (m.threads > 0) w.set_attribute("threads", m.threads);
   std::mt19937 rng(m.seed);
   std::normal_distribution<double> noise(0.0, m.sigma);
   const double dt = 0.05;
