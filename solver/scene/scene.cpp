@@ -262,9 +262,11 @@ Scene Scene::from_json(const json& j, const std::string& source) {
     // The 2D driver's implicit Kelvin-Voigt step uses the self-mobility of peskin4 (simulation2d.cpp).
     if (s.dim == 2 && s.kernel != "peskin4")
       q.fail("kernel", "kernel \"" + s.kernel + "\" is 3D only", "\"peskin4\" in 2D");
-    // Precision of the fluid's populations (solver/lbm/precision.hpp); double is the default
-    // until a physics comparison says single is as accurate (issue 10).
-    s.precision = q.choice("precision", std::string("double"), {"double", "single"});
+    // Precision of the fluid's populations (solver/lbm/precision.hpp). 3D: single by default,
+    // after the comparison of issue 10 (campaigns/precision_*.json and the reference member at
+    // a = 10: steady D_xy and fitted times within 1e-4 relative of double, the fluid about 2x
+    // faster). 2D: double (a 2D member is cheap and its campaigns ran in double).
+    s.precision = q.choice("precision", default_precision(s.dim), {"double", "single"});
     q.refuse_unknown({"a", "domain", "segments", "mesh_level", "tau", "kernel", "precision"});
   }
   {
@@ -334,9 +336,9 @@ json Scene::to_json() const {
   j["conventions"] = {{"sls_viscosity", sls_viscosity}, {"E_b_2d", E_b_2d}};
   j["resolution"] = {{"a", a}, {"domain", domain}, {"segments", segments},
                      {"mesh_level", mesh_level}, {"tau", tau}, {"kernel", kernel}};
-  // Written only when not the default: a scene that says nothing about precision keeps the
-  // canonical text, so the member ids of every campaign run before the key existed.
-  if (precision != "double") j["resolution"]["precision"] = precision;
+  // 2D: written only when single, so the ids of 2D members run before the key existed stay.
+  // 3D: always written, so a 3D member id says which precision made it (the default changed).
+  if (dim == 3 || precision != "double") j["resolution"]["precision"] = precision;
   j["protocol"] = {{"shear", phase_json(shear, true)}, {"recover", phase_json(recover, false)}};
   j["output"] = {{"interval_kt", output_interval_kt}, {"shapes_at_kt", shapes_at_kt},
                  {"snapshots", snapshots}};

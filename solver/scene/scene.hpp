@@ -78,6 +78,9 @@ struct Scene {
   // so member ids from before the key are unchanged), defaults filled, numbers typed by the schema.
   nlohmann::json to_json() const;
 
+  // The precision a scene that does not name one gets: "single" in 3D, "double" in 2D.
+  static std::string default_precision(int dim) { return dim == 3 ? "single" : "double"; }
+
   // Lattice size (nx, ny, nz) from a and the domain (nz = 1 in 2D).
   std::vector<int> grid() const;
 };

@@ -361,11 +361,11 @@ TEST_CASE("power-law membrane viscosity (99)-(104) slows the response like a vis
 // the membrane as in double). Not the physics comparison of issue 10: it shows the choice
 // reaches the fluid and a short coarse member agrees with double far below the
 // discretisation error (measured relative difference of D_xy ~ 1e-5 at kt = 0.5).
-TEST_CASE("single precision is selectable in a 3D scene and agrees with double", "[capsule3d]") {
-  const std::string dbl = sphere_scene(0.1, 4.0, 2, 0.5);
-  std::string sgl = dbl;
+TEST_CASE("single precision (the 3D default) agrees with double in a 3D scene", "[capsule3d]") {
+  const std::string sgl = sphere_scene(0.1, 4.0, 2, 0.5);  // no precision named: single
+  std::string dbl = sgl;
   const std::string key = R"("mesh_level": 2)";
-  sgl.replace(sgl.find(key), key.size(), R"("mesh_level": 2, "precision": "single")");
+  dbl.replace(dbl.find(key), key.size(), R"("mesh_level": 2, "precision": "double")");
   const io::MemberData d = run(dbl, "precision_double");
   const io::MemberData s = run(sgl, "precision_single");
   REQUIRE(d.status == "complete");

@@ -41,10 +41,22 @@ TEST_CASE("a minimal scene gets the documented defaults", "[scene]") {
   json j3 = j;
   j3["conventions"] = {{"E_b_2d", "dissertation"}};
   CHECK_THROWS_WITH(Scene::from_json(j3, "t.json"), Catch::Contains("conventions.E_b_2d: the 2D bending convention"));
-  CHECK(t.precision == "double");
+  CHECK(t.precision == "single");  // 3D default (issue 10's comparison)
 }
 
-TEST_CASE("resolution.precision: double by default, single selectable, only single in the canonical text", "[scene]") {
+TEST_CASE("resolution.precision: 2D double by default with only single in the canonical text; 3D single by default, always written", "[scene]") {
+  json j3 = minimal_2d();
+  j3["dim"] = 3;
+  j3["shape"] = "sphere";
+  const Scene s3 = Scene::from_json(j3, "t.json");
+  CHECK(s3.precision == "single");
+  CHECK(s3.to_json()["resolution"]["precision"] == "single");
+  j3["resolution"] = {{"precision", "double"}};
+  const Scene d3 = Scene::from_json(j3, "t.json");
+  CHECK(d3.precision == "double");
+  CHECK(d3.to_json()["resolution"]["precision"] == "double");
+  CHECK(Scene::from_json(d3.to_json(), "t.json").precision == "double");
+
   json j = minimal_2d();
   const Scene d = Scene::from_json(j, "t.json");
   CHECK(d.precision == "double");
