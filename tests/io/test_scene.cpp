@@ -55,7 +55,9 @@ TEST_CASE("resolution.precision: 2D double by default with only single in the ca
   const Scene d3 = Scene::from_json(j3, "t.json");
   CHECK(d3.precision == "double");
   CHECK(d3.to_json()["resolution"]["precision"] == "double");
+  // The canonical text must run as what it says: it is the scene.json a member is run from.
   CHECK(Scene::from_json(d3.to_json(), "t.json").precision == "double");
+  CHECK(Scene::from_json(s3.to_json(), "t.json").precision == "single");
 
   json j = minimal_2d();
   const Scene d = Scene::from_json(j, "t.json");
