@@ -43,9 +43,9 @@ TEST_CASE("shipped results match their campaigns: no orphaned member, a shipped 
       CHECK(known.count(dir.path().filename().string()) == 1);
     }
     // A shipped report agrees with the shipped member files: every member it lists belongs to
-    // today's campaign, and a member is "complete" in the report exactly when its file is. A
-    // report may ship before every member has run (the 2D case of a 2D/3D campaign, say):
-    // the members not yet run are listed as missing, with that reason.
+    // today's campaign, every member with a final file is listed, and a member is "complete"
+    // in the report exactly when its file is. A report may ship before every member has run
+    // (the 2D case of a 2D/3D campaign, say).
     const fs::path fits = root / "report" / "fits.json";
     if (fs::exists(fits)) {
       std::ifstream in(fits);
@@ -57,7 +57,12 @@ TEST_CASE("shipped results match their campaigns: no orphaned member, a shipped 
         ids.insert(s.members[i].id);
         INFO(s.members[i].dir_name() << ": " << s.conditions[i].reason);
         const auto it = reported.find(s.members[i].id);
-        REQUIRE(it != reported.end());  // the report lists every member of the campaign
+        // The report lists every member that has a file (study report leaves out, and counts,
+        // the members not yet run).
+        if (it == reported.end()) {
+          CHECK_FALSE(final_state(s.conditions[i].state));
+          continue;
+        }
         CHECK((it->second == "complete") == (s.conditions[i].state == MemberState::complete));
         if (final_state(s.conditions[i].state) && s.conditions[i].state != MemberState::complete)
           CHECK(it->second.rfind(s.conditions[i].state == MemberState::unstable ? "unstable" : "stopped", 0) == 0);
