@@ -442,7 +442,6 @@ StepSplit3D time_steps3d(const Scene& scene, long warmup_steps, long steps) {
   r.bending = per_step(m1.bending_s, m0.bending_s, steps);
   r.vertices = sim.mesh().vertex_count();
   r.nodes = static_cast<double>(scene.grid()[0]) * scene.grid()[1] * scene.grid()[2];
-  r.tau = sim.units().tau;
   return r;
 }
 

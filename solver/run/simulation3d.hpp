@@ -14,7 +14,7 @@ struct StepSplit3D {
   long steps = 0;
   double total = 0, fluid = 0, coupling = 0, viscosity = 0, elastic = 0, curvature = 0, bending = 0;
   std::size_t vertices = 0;
-  double nodes = 0, tau = 0;
+  double nodes = 0;
 };
 StepSplit3D time_steps3d(const Scene& scene, long warmup_steps, long steps);
 

@@ -74,8 +74,9 @@ struct Scene {
   // Parses and validates; throws SceneError naming source_name, the key and the allowed range.
   static Scene from_json(const nlohmann::json& j, const std::string& source_name);
   static Scene load(const std::string& path);
-  // The complete canonical scene: every key (resolution.precision only when not "double",
-  // so member ids from before the key are unchanged), defaults filled, numbers typed by the schema.
+  // The complete canonical scene: every key (resolution.precision always in 3D, in 2D only
+  // when "single", so 2D member ids from before the key are unchanged), defaults filled,
+  // numbers typed by the schema.
   nlohmann::json to_json() const;
 
   // The precision a scene that does not name one gets: "single" in 3D, "double" in 2D.
