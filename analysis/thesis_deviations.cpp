@@ -45,6 +45,16 @@ const std::vector<KnownDeviation>& known_deviations() {
        "The Kelvin-Voigt tension (31) is taken implicitly in the node velocities (the explicit form blew up above "
        "eta a ~ 20); the text's 2D model could not run \"meaningfully larger eta\" (Sec. 3.5).",
        "ch3_eta case 2d, ch4_2d_tt case eta"},
+      {"2D bending force (checked: not a cause)",
+       "The 2D bending load is (27) with (32) as printed: for a circle perturbed by r = R (1 + eps cos m theta) its "
+       "normal load is E_B m^2 (m^2 - 1) eps / R^3 to 0.2 % and its tangential load -kappa q is 1/m of that, at 70 to "
+       "280 segments and m = 2, 3, 5 (test \"bending load of a perturbed circle\"). (32) is not the variation of "
+       "the energy (E_B/2) int (kappa - kappa0)^2 dl, whose normal load is (m^2 - 1)^2 eps / R^3 (m^2/(m^2 - 1) "
+       "smaller) with no tangential part; the toolkit keeps the text's law.",
+       "rules out the 2D bending force, as implemented, as the cause of the 2D E_b differences (ch3_eb case 2d: k "
+       "tau_s falling 75 %; ch4_2d_tumble: the slow phase growing with E_b). The E_b convention does not explain "
+       "them either: those campaigns run the dimensionless E_b, half the text's bending stiffness at the same "
+       "number, and k tau_s still falls more with E_b than the text's"},
       {"Power-law K",
        "K is on the scale of eta: mu_mem = K a mu_a (gamma/k)^(n-1). The text quotes K in multiples of mu_a and pairs "
        "its K with mu_s = 1000 K, so its K = 0.01 is K = 10 here (README \"The 3D capsule\").",
