@@ -90,6 +90,30 @@ std::vector<std::string> quantities_of(const nlohmann::json& e, const std::vecto
   return q;
 }
 
+// h from a ladder key's value: "1/x" for a and segments, "2^-x" for mesh_level, else required.
+std::string ladder_spacing_of(const nlohmann::json& e, const std::string& key, const std::string& where,
+                              const std::string& path) {
+  const std::string last = key.substr(key.rfind('.') + 1);
+  if (e.contains("spacing")) {
+    const std::string spacing = a_string(e["spacing"], where, path + "/spacing");
+    if (spacing != "1/x" && spacing != "2^-x" && spacing != "x")
+      fail(where, path + "/spacing", "expected \"1/x\", \"2^-x\" or \"x\" (h from the key's value x)");
+    return spacing;
+  }
+  if (last == "a" || last == "segments") return "1/x";
+  if (last == "mesh_level") return "2^-x";
+  fail(where, path + "/spacing",
+       "required for key \"" + key + "\": \"1/x\", \"2^-x\" or \"x\" (h from the key's value x)");
+  return "";
+}
+
+double an_assumed_order(const nlohmann::json& e, const std::string& where, const std::string& path) {
+  if (!e.contains("assumed_order")) return 1.0;
+  const double p = a_number(e["assumed_order"], where, path + "/assumed_order");
+  if (!(p > 0.0 && p <= 8.0)) fail(where, path + "/assumed_order", "expected an order in (0, 8]");
+  return p;
+}
+
 LadderSpec parse_ladder(const nlohmann::json& e, const std::vector<std::string>& fits, const std::string& where,
                         const std::string& path) {
   if (!e.is_object()) fail(where, path, "expected an object with key[, spacing, quantities, cases, name, assumed_order]");
@@ -98,29 +122,14 @@ LadderSpec parse_ladder(const nlohmann::json& e, const std::vector<std::string>&
   LadderSpec spec;
   spec.key = a_dotted_key(e["key"], where, path + "/key");
   const std::string last = spec.key.substr(spec.key.rfind('.') + 1);
-  if (e.contains("spacing")) {
-    spec.spacing = a_string(e["spacing"], where, path + "/spacing");
-    if (spec.spacing != "1/x" && spec.spacing != "2^-x" && spec.spacing != "x")
-      fail(where, path + "/spacing", "expected \"1/x\", \"2^-x\" or \"x\" (h from the key's value x)");
-  } else if (last == "a" || last == "segments") {
-    spec.spacing = "1/x";
-  } else if (last == "mesh_level") {
-    spec.spacing = "2^-x";
-  } else {
-    fail(where, path + "/spacing",
-         "required for key \"" + spec.key + "\": \"1/x\", \"2^-x\" or \"x\" (h from the key's value x)");
-  }
+  spec.spacing = ladder_spacing_of(e, spec.key, where, path);
   spec.name = e.contains("name") ? a_string(e["name"], where, path + "/name") : "ladder_" + last;
   static const std::regex name_pattern("[A-Za-z0-9_-]+");
   if (!std::regex_match(spec.name, name_pattern))
     fail(where, path + "/name", "expected letters, digits, _ or - (it names files)");
   spec.quantities = quantities_of(e, fits, where, path);
   if (e.contains("cases")) spec.cases = string_array(e["cases"], where, path + "/cases", true);
-  if (e.contains("assumed_order")) {
-    spec.assumed_order = a_number(e["assumed_order"], where, path + "/assumed_order");
-    if (!(spec.assumed_order > 0.0 && spec.assumed_order <= 8.0))
-      fail(where, path + "/assumed_order", "expected an order in (0, 8]");
-  }
+  spec.assumed_order = an_assumed_order(e, where, path);
   return spec;
 }
 
@@ -296,8 +305,8 @@ AnalysisBlock parse_analysis_block(const nlohmann::json& block, const std::strin
 
   if (block.contains("bilinear")) {
     const auto& b = block["bilinear"];
-    if (!b.is_object()) fail(where, "/bilinear", "expected an object with targets[, V_base]");
-    only_keys(b, {"targets", "V_base"}, where, "/bilinear");
+    if (!b.is_object()) fail(where, "/bilinear", "expected an object with targets[, V_base, ladder, spacing, assumed_order]");
+    only_keys(b, {"targets", "V_base", "ladder", "spacing", "assumed_order"}, where, "/bilinear");
     if (!b.contains("targets")) fail(where, "/bilinear/targets", "required key missing");
     BilinearSpec spec;
     spec.targets = string_array(b["targets"], where, "/bilinear/targets", true);
@@ -306,6 +315,14 @@ AnalysisBlock parse_analysis_block(const nlohmann::json& block, const std::strin
     if (b.contains("V_base")) {
       if (!b["V_base"].is_number()) fail(where, "/bilinear/V_base", "expected a number");
       spec.V_base = b["V_base"].get<double>();
+    }
+    if (b.contains("ladder")) {
+      spec.ladder = a_dotted_key(b["ladder"], where, "/bilinear/ladder");
+      spec.spacing = ladder_spacing_of(b, spec.ladder, where, "/bilinear");
+      spec.assumed_order = an_assumed_order(b, where, "/bilinear");
+    } else if (b.contains("spacing") || b.contains("assumed_order")) {
+      fail(where, b.contains("spacing") ? "/bilinear/spacing" : "/bilinear/assumed_order",
+           "only with /bilinear/ladder (the resolution key the grid is run at)");
     }
     out.bilinear = spec;
   }

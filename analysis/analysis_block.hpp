@@ -20,6 +20,12 @@ struct TableSpec {
 struct BilinearSpec {
   std::vector<std::string> targets;  // "<fit>.<time>"
   std::optional<double> V_base;      // for eta* (97)
+  // A resolution ladder of the whole (eta, V) grid: with `ladder` (a dotted scene key, e.g.
+  // "resolution.a") the model is fitted per case and per value of that key, and each
+  // coefficient is extrapolated over the levels (Richardson, richardson.hpp).
+  std::string ladder;                // "" = one fit per case
+  std::string spacing;               // h from the key's value x: "1/x", "2^-x" or "x"
+  double assumed_order = 1.0;        // order taken for a two-level ladder
 };
 
 // A resolution ladder (README "Resolution ladder"): members that differ only in `key`.

@@ -20,6 +20,8 @@ class ArtificialViscositySection : public ReportSection {
     Table at;
     at.title = "Artificial viscosity: V* = V + (a/b) eta (98) and eta* = (b/a)(V - V_base) (97)";
     at.header = {"case", "target", "member", "V", "eta", "k tau", "a/b", "V* (98)", "eta* (97)"};
+    const bool laddered = !context.block.bilinear->ladder.empty();  // each level with its own fit
+    if (laddered) at.header.insert(at.header.begin() + 1, "level");
     const auto& V_base = context.block.bilinear->V_base;
     for (const CaseBilinear& b : bilinear_per_case(context)) {
       if (!b.fit.ok) continue;
@@ -31,6 +33,7 @@ class ArtificialViscositySection : public ReportSection {
         at.rows.push_back({case_label(b.case_name), b.target, b.used[i], format_number(b.V[i]),
                            format_number(b.eta[i]), format_number(b.k_tau[i]), format_number(ab.value),
                            format_number(V_star), eta_star});
+        if (laddered) at.rows.back().insert(at.rows.back().begin() + 1, level_label(b));
       }
     }
     outputs.write_table(at, out_dir, "artificial_viscosity");

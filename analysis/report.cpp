@@ -45,6 +45,7 @@ ReportSummary write_report(const ReportRequest& request) {
   std::set<std::string> wanted{"Ca", "E_b", "V", "eta"};
   for (const auto& t : block.tables) wanted.insert(t.x);
   if (block.stability) wanted.insert(block.stability->parameters.begin(), block.stability->parameters.end());
+  if (block.bilinear && !block.bilinear->ladder.empty()) wanted.insert(block.bilinear->ladder);
   const ReportContext context{request, block, analyse_members(request, block, wanted)};
 
   ReportOutputs outputs;

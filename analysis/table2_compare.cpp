@@ -24,7 +24,21 @@ std::vector<BilinearEntry> read_bilinear_entries(const std::string& campaign, co
     be.Ca = number_or_nan(b, "Ca");
     be.E_b = number_or_nan(b, "E_b");
     be.fit = fit_result_from_json(b.at("fit"));
+    if (b.contains("level") && b["level"].is_object()) {
+      be.level_key = b["level"].value("key", "");
+      be.level = number_or_nan(b["level"], "value");
+    }
     out.push_back(be);
+  }
+  // The ladder's estimates belong to the finest level, the first entry of each case and target.
+  for (const auto& l : fits.value("bilinear_ladder", nlohmann::json::array())) {
+    const std::string case_name = l.value("case", ""), target = l.value("target", ""), coef = l.value("coefficient", "");
+    for (auto& be : out) {
+      if (be.case_name != case_name || be.target != target) continue;
+      if (l.value("ok", false)) be.ladder_error[coef] = number_or_nan(l, "error_estimate");
+      be.ladder_note[coef] = l.value("note", "");
+      break;
+    }
   }
   return out;
 }

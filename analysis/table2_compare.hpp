@@ -3,6 +3,7 @@
 // dissertation's Table 2 row with the same target, Ca and E_b: per coefficient the
 // difference and whether the 95 % intervals overlap. Used by `study compare --table2`
 // and by the THESIS.md writer, so both say the same thing.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -17,9 +18,17 @@ struct BilinearEntry {
   std::string campaign, case_name, target;  // target: "response.k_tau_s", ...
   double Ca = 0.0, E_b = 0.0;               // NaN when the case's members disagree
   FitResult fit;
+  std::string level_key;                    // bilinear.ladder: the resolution key ("" without)
+  double level = 0.0;                       // its value for this fit
+  // bilinear.ladder: per coefficient ("a", "b", "c") the discretisation-error estimate of this
+  // (the finest) level's value from fits.json "bilinear_ladder", or why there is none.
+  std::map<std::string, double> ladder_error;
+  std::map<std::string, std::string> ladder_note;
 };
 
-// The "bilinear" array of a parsed fits.json (write_report's layout).
+// The "bilinear" array of a parsed fits.json (write_report's layout). With a ladder the
+// report lists a case's levels finest first, so the first entry of a case and target is
+// its finest level; the ladder's error estimates are attached to that entry.
 std::vector<BilinearEntry> read_bilinear_entries(const std::string& campaign, const nlohmann::json& fits);
 
 // Table 2 names the bare time: "response.k_tau_s" -> "k_tau_s".

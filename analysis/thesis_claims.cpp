@@ -732,9 +732,15 @@ ClaimResult claim_5_1_2(const ThesisResults& res, const std::string& campaign, d
       return r;
     }
     const double a_over_b = b->fit.parameter("a")->value / b->fit.parameter("b")->value;
-    const Series base = series(c, "", "V", cols[k], [](const ThesisMember& m) { return parameter(m, "eta") == 0.0; });
+    // With a resolution ladder (bilinear.ladder), only the members of the fit's (finest) level.
+    const auto at_level = [&](const ThesisMember& m) {
+      return b->level_key.empty() || parameter(m, b->level_key) == b->level;
+    };
+    const Series base = series(c, "", "V", cols[k], [&](const ThesisMember& m) {
+      return at_level(m) && parameter(m, "eta") == 0.0;
+    });
     const Series visco = series(c, "", "eta", cols[k], [&](const ThesisMember& m) {
-      return parameter(m, "eta") > 0.0 && std::abs(parameter(m, "V") - V_base) < 1e-9;
+      return at_level(m) && parameter(m, "eta") > 0.0 && std::abs(parameter(m, "V") - V_base) < 1e-9;
     });
     if (!have_points(r, base, 3, "eta = 0 members with " + bare_time(cols[k])) ||
         !have_points(r, visco, 2, "eta > 0 members at V = " + num(V_base) + " with " + bare_time(cols[k])))

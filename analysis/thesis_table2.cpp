@@ -99,7 +99,7 @@ Table table2_side_by_side(const std::vector<Table2RowComparison>& rows) {
   Table t;
   t.title = "Table 2 (Sec. 5.1.1): k tau = a eta + b V + c, dissertation against this toolkit (± = 95 % half-width)";
   t.header = {"row", "campaign", "coefficient", "dissertation", "toolkit", "difference", "95 % overlap",
-              "R^2 dissertation", "R^2 toolkit", "N"};
+              "R^2 dissertation", "R^2 toolkit", "N", "resolution error (ladder)"};
   for (const auto& row : rows) {
     const Table2Row& ref = *row.reference;
     const std::string campaign = row.ensemble ? row.ensemble->campaign : "";
@@ -108,17 +108,28 @@ Table table2_side_by_side(const std::vector<Table2RowComparison>& rows) {
       const char* names[] = {"a", "b", "c"};
       for (int i = 0; i < 3; ++i)
         t.rows.push_back({row_label(ref), campaign, names[i], plus_minus(refs[i].first, refs[i].second),
-                          "cannot tell (" + row.why + ")", "", "", i == 0 ? text_r2(row) : "", "", ""});
+                          "cannot tell (" + row.why + ")", "", "", i == 0 ? text_r2(row) : "", "", "", ""});
       continue;
     }
+    std::string where = campaign;
+    if (!row.entry.level_key.empty())
+      where += " (" + row.entry.level_key.substr(row.entry.level_key.rfind('.') + 1) + " = " +
+               format_number(row.entry.level) + ")";
     for (std::size_t i = 0; i < row.coefficients.size(); ++i) {
       const CoefficientComparison& c = row.coefficients[i];
-      std::vector<std::string> cells{row_label(ref), campaign, c.name, plus_minus(c.reference, c.reference_half_width)};
+      std::vector<std::string> cells{row_label(ref), where, c.name, plus_minus(c.reference, c.reference_half_width)};
       if (!c.measured) cells.insert(cells.end(), {"cannot tell (fit failed: " + c.reason + ")", "", ""});
       else cells.insert(cells.end(), {plus_minus(c.value, c.half_width), format_number(c.difference), c.overlap ? "yes" : "NO"});
       cells.push_back(i == 0 ? text_r2(row) : "");
       cells.push_back(i == 0 && row.entry.fit.ok ? format_number(row.entry.fit.r_squared) : "");
       cells.push_back(i == 0 && row.entry.fit.ok ? std::to_string(row.entry.fit.n_points) : "");
+      // the campaign's own discretisation error of this coefficient (bilinear.ladder), else blank
+      std::string resolution_error;
+      if (const auto e = row.entry.ladder_error.find(c.name); e != row.entry.ladder_error.end())
+        resolution_error = "± " + format_number(e->second);
+      else if (const auto n = row.entry.ladder_note.find(c.name); n != row.entry.ladder_note.end())
+        resolution_error = "n/a: " + n->second;
+      cells.push_back(resolution_error);
       t.rows.push_back(cells);
     }
   }
