@@ -216,7 +216,7 @@ std::vector<std::string> default_quantities(const std::vector<std::string>& fits
 const std::vector<std::string>& default_setting_keys() {
   static const std::vector<std::string> keys{"resolution.a",      "resolution.mesh_level", "resolution.segments",
                                              "resolution.tau",    "resolution.kernel",     "resolution.precision",
-                                             "resolution.domain", "Re"};
+                                             "resolution.domain", "resolution.membrane_update", "Re"};
   return keys;
 }
 

@@ -5,6 +5,8 @@
 // Per lattice step (the same order as the 2D driver, simulation2d.cpp):
 //   membrane forces at X(n) -> spread (21) -> fluid step with that force ->
 //   interpolate u(n) at X(n) (19) -> X(n+1) = X(n) + U dt (20) -> viscosity field (if V != 1).
+//   (resolution.membrane_update chooses the time level of U and the order of (20):
+//   solver/ib/membrane_update.hpp.)
 // The fluid starts in the linear Couette flow u = k (y - H/2) shear_factor(0); the walls move
 // at -+ k H/2 shear_factor(kt).
 //
@@ -31,6 +33,7 @@
 #include <tuple>
 
 #include "solver/ib/interpolation.hpp"
+#include "solver/ib/membrane_update.hpp"
 #include "solver/ib/power_law_viscosity.hpp"
 #include "solver/ib/support_rows.hpp"
 #include "solver/ib/viscosity_contrast.hpp"
@@ -122,13 +125,16 @@ class Simulation3D {
     ib::spread<3>(grid_, positions(), reinterpret_cast<const double*>(force_.data()), n, p, kernel_);  // (21)
     const double wall = 0.5 * units_.shear_rate * grid_.ny * shear_factor;                  // k H / 2 (1)
     fluid_.set_wall_velocity(-wall, wall);
+    const double* u[3] = {fluid_.velocity(0), fluid_.velocity(1), fluid_.velocity(2)};
+    // previous_velocity: U^n(X^n), the fluid velocity of the time level of F(X^n) (membrane_update.hpp).
+    if (update_ == ib::MembraneUpdate::previous_velocity) ib::interpolate<3>(grid_, u, positions(), n, U_.data(), kernel_);
     set_macroscopic_region();
     auto t1 = Clock::now();
     fluid_.step();
     auto t2 = Clock::now();
-    const double* u[3] = {fluid_.velocity(0), fluid_.velocity(1), fluid_.velocity(2)};
-    ib::interpolate<3>(grid_, u, positions(), n, U_.data(), kernel_);  // (19)
-    ib::advance<3>(positions(), U_.data(), n, 1.0);           // (20)
+    if (update_ != ib::MembraneUpdate::previous_velocity) ib::interpolate<3>(grid_, u, positions(), n, U_.data(), kernel_);  // (19)
+    if (update_ == ib::MembraneUpdate::adams_bashforth2) ib::advance_adams_bashforth2<3>(positions(), U_.data(), U_previous_, n, 1.0);
+    else ib::advance<3>(positions(), U_.data(), n, 1.0);  // (20)
     auto t3 = Clock::now();
     timings_.coupling += std::chrono::duration<double>((t1 - t0) + (t3 - t2)).count();
     timings_.fluid += std::chrono::duration<double>(t2 - t1).count();
@@ -206,6 +212,7 @@ class Simulation3D {
     a.put("membrane.reference", std::move(reference));
     a.put("sim.phase", phase_.continuous_positions());
     a.put_integer("sim.steps", steps_);
+    if (update_ == ib::MembraneUpdate::adams_bashforth2) a.put("sim.U_previous", U_previous_);
     const auto& mt = forces_.timings();
     a.put("sim.seconds", std::vector<double>{timings_.fluid, timings_.coupling, timings_.power_law, mt.elastic_s,
                                              mt.curvature_s, mt.bending_s, timings_.viscosity});
@@ -238,6 +245,7 @@ class Simulation3D {
     forces_.elastic().restore_memory(a.doubles("membrane.sls_memory"), a.integer("membrane.sls_started") != 0);
     phase_.restore(a.doubles("sim.phase"));
     steps_ = static_cast<long>(a.integer("sim.steps"));
+    if (update_ == ib::MembraneUpdate::adams_bashforth2) U_previous_ = a.doubles("sim.U_previous");
     const auto& t = a.doubles("sim.seconds");
     if (t.size() >= 6) {  // 6: a restart point from before the viscosity column
       timings_ = {t[0], t[1], t[2], t.size() >= 7 ? t[6] : 0.0};
@@ -312,6 +320,7 @@ class Simulation3D {
 
     m3::MembraneParameters p;
     kernel_ = ib::kernel_from_name(s.kernel);
+    update_ = ib::membrane_update_from_name(s.membrane_update);
     shear_modulus_ = shear_modulus_3d(s, units_);
     p.law = m3::Constitutive{m3::elastic_law_from_name(s.law), shear_modulus_, s.C};
     if (s.eta > 0) {
@@ -403,6 +412,10 @@ class Simulation3D {
   // in 2D: the cosine kernel (18) has no zero first moment, so it interpolates a linear shear
   // with a lattice-locked error (README "The 2D capsule").
   ib::Kernel kernel_ = ib::Kernel::peskin4;
+  // Time level and order of the position update (scene resolution.membrane_update,
+  // solver/ib/membrane_update.hpp); U_previous_: the last step's U, adams_bashforth2 only.
+  ib::MembraneUpdate update_ = ib::MembraneUpdate::euler;
+  std::vector<double> U_previous_;
   long steps_ = 0;
   bool full_fields_next_ = false;
   Timings timings_;

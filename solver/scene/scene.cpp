@@ -267,7 +267,12 @@ Scene Scene::from_json(const json& j, const std::string& source) {
     // a = 10: steady D_xy and fitted times within 1e-4 relative of double, the fluid about 2x
     // faster). 2D: double (a 2D member is cheap and its campaigns ran in double).
     s.precision = q.choice("precision", default_precision(s.dim), {"double", "single"});
-    q.refuse_unknown({"a", "domain", "segments", "mesh_level", "tau", "kernel", "precision"});
+    // Time level and order of the membrane position update (20), issue 11 item 4.
+    s.membrane_update =
+        q.choice("membrane_update", std::string("euler"), {"euler", "previous_velocity", "adams_bashforth2"});
+    if (s.dim == 2 && s.membrane_update != "euler")
+      q.fail("membrane_update", "membrane update \"" + s.membrane_update + "\" is 3D only", "\"euler\" in 2D");
+    q.refuse_unknown({"a", "domain", "segments", "mesh_level", "tau", "kernel", "precision", "membrane_update"});
   }
   {
     json proto = r.object("protocol", true);
@@ -339,6 +344,8 @@ json Scene::to_json() const {
   // 2D: written only when single, so the ids of 2D members run before the key existed stay.
   // 3D: always written, so a 3D member id says which precision made it (the default changed).
   if (dim == 3 || precision != "double") j["resolution"]["precision"] = precision;
+  // Written only when not the default (euler), so the ids of members run before the key stay.
+  if (membrane_update != "euler") j["resolution"]["membrane_update"] = membrane_update;
   j["protocol"] = {{"shear", phase_json(shear, true)}, {"recover", phase_json(recover, false)}};
   j["output"] = {{"interval_kt", output_interval_kt}, {"shapes_at_kt", shapes_at_kt},
                  {"snapshots", snapshots}};

@@ -65,6 +65,8 @@ struct Scene {
   double tau = 0;              // relaxation time; 0 = chosen by the solver
   std::string kernel = "peskin4";  // IB delta (solver/ib/delta.hpp): peskin4, roma3, linear2, cosine
   std::string precision = "double";  // fluid populations: double | single (solver/lbm/precision.hpp)
+  // 3D position update (20): euler | previous_velocity | adams_bashforth2 (solver/ib/membrane_update.hpp)
+  std::string membrane_update = "euler";
   PhaseSpec shear;
   PhaseSpec recover;
   double output_interval_kt = 0.05;

@@ -75,6 +75,32 @@ TEST_CASE("resolution.precision: 2D double by default with only single in the ca
   CHECK_THROWS_AS(Scene::from_json(j, "t.json"), SceneError);
 }
 
+TEST_CASE("resolution.membrane_update: euler by default and left out of the canonical text; 3D only", "[scene]") {
+  json j3 = minimal_2d();
+  j3["dim"] = 3;
+  j3["shape"] = "sphere";
+  const Scene e = Scene::from_json(j3, "t.json");
+  CHECK(e.membrane_update == "euler");
+  // The default is not written, so the ids of members run before the key existed stay.
+  CHECK_FALSE(e.to_json()["resolution"].contains("membrane_update"));
+  j3["resolution"] = {{"membrane_update", "euler"}};
+  CHECK(Scene::from_json(j3, "t.json").to_json() == e.to_json());
+  for (const std::string name : {"previous_velocity", "adams_bashforth2"}) {
+    j3["resolution"] = {{"membrane_update", name}};
+    const Scene s = Scene::from_json(j3, "t.json");
+    CHECK(s.membrane_update == name);
+    CHECK(s.to_json()["resolution"]["membrane_update"] == name);
+    CHECK(Scene::from_json(s.to_json(), "t.json").membrane_update == name);  // runs as it says
+  }
+  j3["resolution"] = {{"membrane_update", "runge_kutta4"}};
+  CHECK_THROWS_WITH(Scene::from_json(j3, "t.json"),
+                    Catch::Contains("resolution.membrane_update: unknown value \"runge_kutta4\""));
+  json j2 = minimal_2d();
+  j2["resolution"] = {{"membrane_update", "adams_bashforth2"}};
+  CHECK_THROWS_WITH(Scene::from_json(j2, "t.json"),
+                    Catch::Contains("resolution.membrane_update: membrane update \"adams_bashforth2\" is 3D only"));
+}
+
 TEST_CASE("the canonical scene does not depend on spelling, and round-trips", "[scene]") {
   json a = minimal_2d();
   json b = json::parse(R"({"eta": 0.0, "V": 1.0, "E_b": 5e-2, "Ca": 4e-2, "shape": "circle", "dim": 2,

@@ -2,11 +2,14 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 #include <random>
 #include <vector>
 
 #include "solver/ib/delta.hpp"
 #include "solver/ib/interpolation.hpp"
+#include "solver/ib/membrane_update.hpp"
 #include "solver/ib/viscosity_contrast.hpp"
 
 using namespace capsule::ib;
@@ -352,4 +355,40 @@ TEST_CASE("every kernel interpolates a linear field exactly and spreads adjointl
     clear_support<3>(g, X.data(), n, q, k);      // undoes exactly the nodes spread() touched
     for (std::size_t i = 0; i < g.size(); ++i) REQUIRE((p0[i] == 0.0 && p1[i] == 0.0 && p2[i] == 0.0));
   }
+}
+
+TEST_CASE("membrane position update: forward Euler first order, Adams-Bashforth second order", "[ib]") {
+  // dX/dt = U(X) = omega x X (rigid rotation, omega = 1 about z): exact X(t) = R(t) X(0). Each
+  // update reads U at the node's current position, as the IB step does (membrane_update.hpp).
+  // Integrate to t = 1 with dt = 0.1, 0.05, 0.025: halving dt halves the Euler error and
+  // quarters the Adams-Bashforth error (order from the last two levels within 0.1 of 1 and 2).
+  auto error = [](bool ab2, double dt) {
+    std::vector<double> X{1.0, 0.0, 0.0, 0.0, 0.5, 0.25}, U(6), U_previous;
+    const int steps = static_cast<int>(std::lround(1.0 / dt));
+    for (int s = 0; s < steps; ++s) {
+      for (int c = 0; c < 2; ++c) {
+        U[3 * c] = -X[3 * c + 1];
+        U[3 * c + 1] = X[3 * c];
+        U[3 * c + 2] = 0.0;
+      }
+      if (ab2) advance_adams_bashforth2<3>(X.data(), U.data(), U_previous, 2, dt);
+      else advance<3>(X.data(), U.data(), 2, dt);
+    }
+    const double c = std::cos(1.0), s = std::sin(1.0);
+    const double exact[6] = {c, s, 0.0, -0.5 * s, 0.5 * c, 0.25};
+    double e = 0;
+    for (int i = 0; i < 6; ++i) e = std::max(e, std::abs(X[i] - exact[i]));
+    return e;
+  };
+  for (const bool ab2 : {false, true}) {
+    const double e1 = error(ab2, 0.1), e2 = error(ab2, 0.05), e3 = error(ab2, 0.025);
+    const double p12 = std::log2(e1 / e2), p23 = std::log2(e2 / e3);
+    INFO((ab2 ? "adams_bashforth2" : "euler") << ": errors " << e1 << ", " << e2 << ", " << e3 << "; orders " << p12
+                                               << ", " << p23);
+    CHECK(p23 == Approx(ab2 ? 2.0 : 1.0).margin(0.1));
+    CHECK(p12 < p23 + 0.3);  // the order settles as dt falls
+  }
+  CHECK(error(true, 0.025) < 0.05 * error(false, 0.025));
+  CHECK(membrane_update_from_name("previous_velocity") == MembraneUpdate::previous_velocity);
+  CHECK_THROWS_AS(membrane_update_from_name("rk4"), std::invalid_argument);
 }
