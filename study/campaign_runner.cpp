@@ -23,6 +23,7 @@
 #include "study/concurrency.hpp"
 #include "study/exit_status.hpp"
 #include "study/joblog.hpp"
+#include "study/member_filter.hpp"
 #include "study/member_wrapper.hpp"
 #include "study/run_lock.hpp"
 #include "study/run_record.hpp"
@@ -118,6 +119,20 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
       throw campaign_error(request.campaign_file, "cases", "--case \"" + name + "\" names no case of this campaign",
                            known.empty() ? "no --case: this campaign has no cases" : "one of: " + known);
   }
+  // --where: every condition must parse and match at least one member of the campaign.
+  std::vector<SceneCondition> conditions;
+  for (const auto& text : request.where) {
+    try {
+      conditions.push_back(parse_scene_condition(text));
+    } catch (const std::invalid_argument& e) {
+      throw campaign_error(request.campaign_file, "--where", e.what(), "KEY=VALUE with a dotted scene key");
+    }
+    const bool any = std::any_of(survey.members.begin(), survey.members.end(),
+                                 [&](const Member& m) { return scene_matches(m.scene, {conditions.back()}); });
+    if (!any)
+      throw campaign_error(request.campaign_file, "--where", "\"" + text + "\" matches no member of this campaign",
+                           "a dotted key of the canonical scene (capsule check) and a value some member has");
+  }
   const fs::path capsule_binary = find_capsule_binary();
   // The job list has one member directory per line; the wrapper names the capsule binary.
   require_script_safe("the results folder", survey.layout.root);
@@ -131,6 +146,7 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
   prepare_member_directories(survey);
 
   const auto selected = [&](const Member& m) {
+    if (!scene_matches(m.scene, conditions)) return false;
     if (request.cases.empty()) return true;
     for (const auto& name : request.cases)
       if (m.case_name == name || std::find(m.other_cases.begin(), m.other_cases.end(), name) != m.other_cases.end())

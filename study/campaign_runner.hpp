@@ -24,6 +24,7 @@ struct RunRequest {
   bool rerun_stopped = false;    // also rerun members whose file says stopped (a configuration the solver refused)
   bool progress_bar = false;     // redraw the campaign's progress line in place (the app sets it on a terminal)
   std::vector<std::string> cases;  // run only the members of these cases (empty: every member)
+  std::vector<std::string> where;  // run only the members whose scene has KEY=VALUE (member_filter.hpp)
 };
 
 struct RunOutcome {

@@ -58,6 +58,9 @@ int main_body(int argc, char** argv) {
                 "also rerun members that stopped (the solver refused their configuration)");
   run->add_option("--case", run_request.cases,
                   "run only the members of this case (repeatable; e.g. the 2D case of a campaign with 2D and 3D cases)");
+  run->add_option("--where", run_request.where,
+                  "run only the members whose scene has KEY=VALUE (repeatable, all must hold; e.g. resolution.a=5 "
+                  "runs the cheap level of a resolution ladder first)");
   run->add_option("--results", results_dir, "results folder")->capture_default_str();
 
   std::string status_file;
