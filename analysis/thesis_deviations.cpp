@@ -63,6 +63,19 @@ const std::vector<KnownDeviation>& known_deviations() {
        "K is on the scale of eta: mu_mem = K a mu_a (gamma/k)^(n-1). The text quotes K in multiples of mu_a and pairs "
        "its K with mu_s = 1000 K, so its K = 0.01 is K = 10 here (README \"The 3D capsule\").",
        "ch5_powerlaw, ch5_oscillatory"},
+      {"Fluid spin-down after the stop",
+       "When the walls stop, the fluid between them keeps moving for about Re (H/a)^2 / pi^2 kt (0.73 kt in 2D, "
+       "H = 12 a; 0.51 kt in 3D, H = 10 a; Re = k a^2 / nu = 0.05), and a capsule cannot relax faster than the flow "
+       "around it stops. Measured (probe_spin_down_2d, circle, E_b 0.05, a = 10): halving Re twice (0.05, 0.025, "
+       "0.0125) takes k tau_r at Ca 0.0125 / 0.025 / 0.1 from 0.463 / 0.636 / 1.654 to 0.250 / 0.424 / 1.448, the "
+       "recovery R^2 from 0.935 / 0.946 / 0.989 to 0.976 / 0.988 / 0.999, and the exponent of k tau_r ~ Ca between "
+       "Ca 0.0125 and 0.1 from 0.61 to 0.85 (0.98 extrapolated linearly to Re = 0), while k tau_s moves by less than "
+       "15 %. In 3D (probe_spin_down_3d, "
+       "Table 2's sphere at a = 5): k tau_r at V 0.2 / 1 falls from 0.761 / 1.039 to 0.608 / 0.891 and the intercept "
+       "of k tau_r against V from 0.69 to 0.54 (0.49 extrapolated to Re = 0), with the slope unchanged (0.35). The text states Re = 0.05 as "
+       "rho k a / mu_a; in its 2D units (a = 0.5) that is k a^2 / nu = 0.025, half the toolkit's. The toolkit keeps "
+       "Re = k a^2 / nu = 0.05 (README \"Accuracy and stability\").",
+       "the small-Ca recovery in 2D (3.1 R^2, 3.2 k tau_r ~ Ca), Table 2's c_r and every k tau_r at small Ca or V"},
       {"Fit protocol",
        "Amplitudes and split times are the member's markers; the recovery ends at the marker t_end (settled: the range "
        "of D_xy over a window that grows with the recovery below a tolerance, or the cap max_kt) where the text fits "
