@@ -69,7 +69,7 @@ TEST_CASE("study run --where runs only the members with that scene value; a valu
   fs::remove_all(dir);
 }
 
-TEST_CASE("--where parses KEY=VALUE as JSON or a plain word and compares numbers by value", "[study]") {
+TEST_CASE("study run --where: KEY=VALUE read as JSON or a plain word, numbers compared by value", "[study]") {
   const SceneCondition a = parse_scene_condition("resolution.a=5");
   CHECK(a.key == "resolution.a");
   const nlohmann::json scene = {{"resolution", {{"a", 5.0}, {"precision", "single"}, {"domain", {10.0, 10.0, 8.0}}}}};
