@@ -46,6 +46,7 @@ ReportSummary write_report(const ReportRequest& request) {
   for (const auto& t : block.tables) wanted.insert(t.x);
   if (block.stability) wanted.insert(block.stability->parameters.begin(), block.stability->parameters.end());
   if (block.bilinear && !block.bilinear->ladder.empty()) wanted.insert(block.bilinear->ladder);
+  for (const auto& l : block.ladders) wanted.insert(l.key);  // study thesis judges a ladder's finest level by it
   const ReportContext context{request, block, analyse_members(request, block, wanted)};
 
   ReportOutputs outputs;

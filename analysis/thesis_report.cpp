@@ -22,20 +22,22 @@ namespace {
 Table campaign_table(const ThesisResults& results) {
   Table t;
   t.title = "Campaigns read";
-  t.header = {"campaign", "fits.json", "members in it", "complete", "member files found"};
+  t.header = {"campaign", "fits.json", "members in it", "complete", "member files found",
+              "ladder levels judged (finest shipped per point)"};
   for (const auto& name : thesis_campaigns()) {
     const ThesisCampaign& c = results.campaign(name);
     if (!c.found) {
-      t.rows.push_back({name, "not run", "", "", ""});
+      t.rows.push_back({name, "not run", "", "", "", ""});
       continue;
     }
-    const auto members = c.in_case("");
+    const auto members = c.in_case_all_levels("");
     int complete = 0, files = 0;
     for (const auto* m : members) {
       complete += m->status == "complete";
       files += !m->file.empty();
     }
-    t.rows.push_back({name, "yes", std::to_string(members.size()), std::to_string(complete), std::to_string(files)});
+    t.rows.push_back({name, "yes", std::to_string(members.size()), std::to_string(complete), std::to_string(files),
+                      c.judged_levels()});
   }
   return t;
 }
@@ -78,7 +80,9 @@ std::string thesis_markdown(const ThesisResults& results, const std::string& res
         "` from the shipped campaign results (`<campaign>/report/fits.json` and the member files it names); do not "
         "edit by hand, rerun the command. The dissertation: \"Modeling and Simulation of Shape Changes of Red Blood "
         "Cells in Shear Flow\" (ODU 2014). Times are k tau (shear-rate units). A campaign not yet run, or a member "
-        "whose fit or file is missing, gives *cannot tell* with what is missing, never a guess.\n\n";
+        "whose fit or file is missing, gives *cannot tell* with what is missing, never a guess. In a campaign with a "
+        "resolution ladder the claims judge each physical point at its finest shipped level (the last column of "
+        "\"Campaigns read\"), as Table 2 takes the finest level of its bilinear ladder.\n\n";
   md += "## Summary\n\n";
   md += "- Claims: " + std::to_string(s.agrees) + " agree, " + std::to_string(s.differs) + " differ, " +
         std::to_string(s.cannot_tell) + " cannot tell (of " + std::to_string(claims.size()) + ").\n";

@@ -1,20 +1,88 @@
 #include "analysis/thesis_results.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <sstream>
 #include <stdexcept>
+
+#include "analysis/analysis_block.hpp"
+#include "analysis/resolution_ladder.hpp"
 
 namespace capsule::analysis {
 
 namespace fs = std::filesystem;
 
-std::vector<const ThesisMember*> ThesisCampaign::in_case(const std::string& case_name) const {
+std::vector<const ThesisMember*> ThesisCampaign::in_case_all_levels(const std::string& case_name) const {
   std::vector<const ThesisMember*> out;
   std::set<std::string> seen;
   for (const auto& m : members)
     if ((case_name.empty() || m.case_name == case_name) && seen.insert(m.slug).second) out.push_back(&m);
   return out;
+}
+
+std::vector<const ThesisMember*> ThesisCampaign::in_case(const std::string& case_name) const {
+  std::vector<const ThesisMember*> out;
+  for (const ThesisMember* m : in_case_all_levels(case_name))
+    if (!m->coarse) out.push_back(m);
+  return out;
+}
+
+std::string ThesisCampaign::judged_levels() const {
+  std::string out;
+  const auto judged = in_case("");
+  for (const auto& [key, spacing] : ladder_keys) {
+    std::map<double, int> count;  // level -> judged members there
+    for (const ThesisMember* m : judged)
+      if (const auto it = m->parameters.find(key); it != m->parameters.end()) ++count[it->second];
+    std::string levels;
+    // finest first
+    std::vector<std::pair<double, int>> sorted(count.begin(), count.end());
+    std::sort(sorted.begin(), sorted.end(), [&](const auto& p, const auto& q) {
+      return ladder_spacing(spacing, p.first) < ladder_spacing(spacing, q.first);
+    });
+    for (const auto& [level, n] : sorted) {
+      std::ostringstream s;
+      s << level << " (" << n << (n == 1 ? " member)" : " members)");
+      levels += (levels.empty() ? "" : ", ") + s.str();
+    }
+    out += (out.empty() ? "" : "; ") + key + ": " + (levels.empty() ? "no member records it" : levels);
+  }
+  return out;
+}
+
+void mark_coarse_members(ThesisCampaign& c) {
+  for (auto& m : c.members) m.coarse = false, m.finer.clear();
+  for (const auto& [key, spacing] : c.ladder_keys) {
+    // A physical point: the case and every recorded parameter but the ladder keys.
+    const auto point = [&](const ThesisMember& m) {
+      std::ostringstream s;
+      s.precision(17);
+      s << m.case_name;
+      for (const auto& [k, v] : m.parameters)
+        if (!c.ladder_keys.count(k)) s << '|' << k << '=' << v;
+      return s.str();
+    };
+    std::map<std::string, const ThesisMember*> finest;  // point -> its finest member
+    for (const auto& m : c.members) {
+      const auto it = m.parameters.find(key);
+      if (it == m.parameters.end() || std::isnan(ladder_spacing(spacing, it->second))) continue;
+      const ThesisMember*& f = finest[point(m)];
+      if (!f || ladder_spacing(spacing, it->second) < ladder_spacing(spacing, f->parameters.at(key))) f = &m;
+    }
+    for (auto& m : c.members) {
+      const auto it = m.parameters.find(key);
+      if (it == m.parameters.end()) continue;
+      const auto f = finest.find(point(m));
+      if (f == finest.end() || f->second == &m) continue;
+      if (ladder_spacing(spacing, f->second->parameters.at(key)) < ladder_spacing(spacing, it->second)) {
+        m.coarse = true;
+        m.finer = f->second->slug;
+      }
+    }
+  }
 }
 
 std::string resolve_member_file(const std::string& campaign_root, const std::string& recorded) {
@@ -48,6 +116,15 @@ const ThesisCampaign& ThesisResults::campaign(const std::string& name) const {
     throw std::runtime_error(path.string() + ": not valid JSON: " + e.what());
   }
   c.found = true;
+  if (c.fits.contains("analysis") && c.fits["analysis"].is_object()) {
+    try {
+      const AnalysisBlock block = parse_analysis_block(c.fits["analysis"], path.string());
+      for (const auto& l : block.ladders) c.ladder_keys[l.key] = l.spacing;
+      if (block.bilinear && !block.bilinear->ladder.empty()) c.ladder_keys[block.bilinear->ladder] = block.bilinear->spacing;
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error(path.string() + ": its analysis block: " + e.what());
+    }
+  }
   for (const auto& j : c.fits.value("members", nlohmann::json::array())) {
     ThesisMember m;
     m.id = j.value("id", "");
@@ -64,6 +141,7 @@ const ThesisCampaign& ThesisResults::campaign(const std::string& name) const {
     m.file = resolve_member_file(root.string(), m.recorded_path);
     c.members.push_back(std::move(m));
   }
+  mark_coarse_members(c);
   return campaigns_.emplace(name, std::move(c)).first->second;
 }
 

@@ -20,6 +20,11 @@ struct ThesisMember {
   MemberFits fits;                            // parsed from fits.json
   std::string recorded_path;                  // fits.json's "path"
   std::string file;                           // resolved member.h5, "" when not found
+  // A member of a resolution ladder with a finer member of the same physical point shipped:
+  // the claims judge each point at its finest shipped level, as Table 2 takes the finest
+  // level of a bilinear ladder. Its `finer` names that member.
+  bool coarse = false;
+  std::string finer;
 };
 
 struct ThesisCampaign {
@@ -28,10 +33,18 @@ struct ThesisCampaign {
   std::string missing;  // why not found: "campaign X not run (no <dir>/X/report/fits.json)"
   nlohmann::json fits;
   std::vector<ThesisMember> members;
+  // The campaign's resolution ladder keys (analysis ladder[].key, bilinear.ladder) with
+  // their spacing ("1/x", "2^-x", "x"), read from fits.json's analysis block.
+  std::map<std::string, std::string> ladder_keys;
 
   // Members of one case ("" = every case), each slug once (a member shared by several
-  // cases is listed in fits.json once per case).
+  // cases is listed in fits.json once per case), without the coarse members of a ladder.
   std::vector<const ThesisMember*> in_case(const std::string& case_name) const;
+  // The same with the coarse members too.
+  std::vector<const ThesisMember*> in_case_all_levels(const std::string& case_name) const;
+  // "resolution.a: 7 (6 members), 5 (4 members)": the ladder levels the claims judge;
+  // "" without a ladder.
+  std::string judged_levels() const;
 };
 
 class ThesisResults {
@@ -56,5 +69,11 @@ class ThesisResults {
 // absolute one that no longer exists (a clone elsewhere) is looked for as
 // <campaign_root>/members/<its folder>/<its name>. "" when neither exists.
 std::string resolve_member_file(const std::string& campaign_root, const std::string& recorded);
+
+// Marks the coarse members of a campaign's ladders: members of one physical point (the same
+// case and the same recorded parameters apart from the ladder keys) at a coarser level of a
+// key than another member of that point. A member whose fits.json entry lacks the key's
+// value is never coarse.
+void mark_coarse_members(ThesisCampaign& c);
 
 }  // namespace capsule::analysis

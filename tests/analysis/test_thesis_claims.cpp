@@ -2,6 +2,7 @@
 // "differs" when they contradict it, and "cannot tell" when its campaign or members are missing.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -114,6 +115,52 @@ TEST_CASE("Thesis claims: k tau_r proportional to Ca agrees, differs, or cannot 
     CHECK(p.verdict == Verdict::cannot_tell);
     CHECK(p.measured.find("members missing") != std::string::npos);
     CHECK(p.measured.find("3 values of Ca") != std::string::npos);
+  }
+}
+
+TEST_CASE("Thesis claims: a campaign with a resolution ladder is judged at each point's finest shipped level", "[analysis][thesis]") {
+  TempDir tmp("thesis_claims_ladder");
+  const std::vector<double> ca{0.0125, 0.025, 0.05, 0.1, 0.2, 0.4};
+  // a = 5 contradicts the rule (k tau_r constant), a = 7 satisfies it (proportional).
+  const auto write = [&](bool all_fine) {
+    nlohmann::json members = nlohmann::json::array();
+    for (double c : ca)
+      for (double a : {5.0, 7.0}) {
+        if (a == 7.0 && !all_fine && c == 0.4) continue;  // this point shipped only at a = 5
+        const std::string slug = "Ca_" + std::to_string(c) + "-a" + std::to_string(static_cast<int>(a));
+        members.push_back(member_json(
+            slug, "2d", {{"Ca", c}, {"E_b", 0.05}, {"V", 1.0}, {"eta", 0.0}, {"resolution.a", a}},
+            {{"response", known_fit("response (85)", {{"k_tau_s", {0.4, 0.01}}})},
+             {"recovery", known_fit("recovery (86)", {{"k_tau_r", {a == 7.0 ? proportional(c) : constant(c), 0.01}}})}}));
+      }
+    const nlohmann::json analysis{{"fits", {"response", "recovery"}},
+                                  {"ladder", {{{"key", "resolution.a"}, {"quantities", {"recovery.k_tau_r"}}}}}};
+    write_fits(tmp.path, "ch3_ca", members, nlohmann::json::array(), analysis);
+  };
+  SECTION("every point at a = 7: the a = 5 members are not judged") {
+    write(true);
+    const ThesisResults results(tmp.path.string());
+    const auto& c = results.campaign("ch3_ca");
+    CHECK(c.in_case_all_levels("2d").size() == 12);
+    REQUIRE(c.in_case("2d").size() == 6);
+    for (const auto* m : c.in_case("2d")) CHECK(m->parameters.at("resolution.a") == 7.0);
+    CHECK(c.judged_levels() == "resolution.a: 7 (6 members)");
+    const auto claims = evaluate_claims(results);
+    CHECK(find_claim(claims, "3.2", "proportional to Ca (2d)").verdict == Verdict::agrees);
+    // Without the ladder's levels told apart, the a = 5 members would make it differ.
+    CHECK(thesis_markdown(results, "results").find("resolution.a: 7 (6 members)") != std::string::npos);
+  }
+  SECTION("a point shipped only at a = 5 is judged there") {
+    write(false);
+    const ThesisResults results(tmp.path.string());
+    const auto& c = results.campaign("ch3_ca");
+    CHECK(c.judged_levels() == "resolution.a: 7 (5 members), 5 (1 member)");
+    const auto judged = c.in_case("2d");
+    REQUIRE(judged.size() == 6);
+    const auto coarse = std::count_if(c.members.begin(), c.members.end(), [](const ThesisMember& m) { return m.coarse; });
+    CHECK(coarse == 5);
+    for (const auto& m : c.members)
+      if (m.coarse) CHECK(m.finer == "Ca_" + std::to_string(m.parameters.at("Ca")) + "-a7");
   }
 }
 

@@ -51,10 +51,12 @@ inline nlohmann::json bilinear_json(const std::string& target, double Ca, double
 }
 
 inline void write_fits(const std::filesystem::path& results, const std::string& campaign,
-                       const nlohmann::json& members, const nlohmann::json& bilinear = nlohmann::json::array()) {
+                       const nlohmann::json& members, const nlohmann::json& bilinear = nlohmann::json::array(),
+                       const nlohmann::json& analysis = nlohmann::json()) {
   const auto dir = results / campaign / "report";
   std::filesystem::create_directories(dir);
   nlohmann::json j{{"campaign", campaign}, {"members", members}, {"bilinear", bilinear}};
+  if (!analysis.is_null()) j["analysis"] = analysis;
   std::ofstream(dir / "fits.json") << j.dump(2);
 }
 
