@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include "solver/scene/scene.hpp"
+
 namespace capsule::analysis {
 
 namespace {
@@ -68,7 +70,14 @@ SceneValue scene_parameter(const nlohmann::json& scene, const std::string& name,
 
 const nlohmann::json* scene_value_at(const nlohmann::json& scene, const std::string& dotted_key) {
   const nlohmann::json::json_pointer ptr(dotted_to_pointer(dotted_key));
-  return scene.contains(ptr) ? &scene.at(ptr) : nullptr;
+  if (scene.contains(ptr)) return &scene.at(ptr);
+  // A canonical scene (one with a resolution block and a dim) leaves some keys out while
+  // they hold their default: an absent one means that default.
+  if (scene.is_object() && scene.contains("resolution") && scene.contains("dim") && scene["dim"].is_number()) {
+    const auto& d = Scene::omitted_defaults(scene["dim"].get<int>());
+    if (const auto it = d.find(dotted_key); it != d.end()) return &it->second;
+  }
+  return nullptr;
 }
 
 nlohmann::json scene_without(const nlohmann::json& scene, const std::string& pointer) {

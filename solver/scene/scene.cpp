@@ -363,6 +363,13 @@ json Scene::to_json() const {
   return j;
 }
 
+const std::map<std::string, json>& Scene::omitted_defaults(int dim) {
+  static const std::map<std::string, json> d2 = {{"resolution.membrane_update", "euler"},
+                                                 {"resolution.precision", "double"}};
+  static const std::map<std::string, json> d3 = {{"resolution.membrane_update", "euler"}};
+  return dim == 2 ? d2 : d3;
+}
+
 std::vector<int> Scene::grid() const {
   std::vector<int> n(3, 1);
   for (int d = 0; d < dim; ++d) n[d] = static_cast<int>(std::lround(domain[d] * a));

@@ -3,6 +3,7 @@
 // resolution, the protocol (shear, then recover) and what to write.
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -80,6 +81,11 @@ struct Scene {
   // when "single", so 2D member ids from before the key are unchanged), defaults filled,
   // numbers typed by the schema.
   nlohmann::json to_json() const;
+
+  // Keys to_json leaves out while they hold their default (so the ids of members run before
+  // the key existed stay): dotted key -> the value an absent key means in a canonical scene
+  // of that dim (resolution.precision is left out only in 2D, where it means "double").
+  static const std::map<std::string, nlohmann::json>& omitted_defaults(int dim);
 
   // The precision a scene that does not name one gets: "single" in 3D, "double" in 2D.
   static std::string default_precision(int dim) { return dim == 3 ? "single" : "double"; }

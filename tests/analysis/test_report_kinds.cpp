@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "analysis/report.hpp"
+#include "analysis/report_context.hpp"
+#include "analysis/scene_parameter.hpp"
 #include "analysis/table.hpp"
 #include "tests/analysis/synthetic_campaign.hpp"
 
@@ -282,4 +284,27 @@ TEST_CASE("The new analysis kinds reject bad blocks with the key's path", "[anal
        {"accuracy", {{"reference", {{{"ladder", "ladder_mesh_level"}}, {{"case", "c"}, {"D_stop", 0.3}}}}}},
        {"stability", {{"parameters", {"Ca", "resolution.tau"}}}}},
       "c.json"));
+}
+
+TEST_CASE("A key the canonical scene leaves out at its default reads as that default", "[analysis]") {
+  // resolution.membrane_update is written only when not "euler", resolution.precision in 2D
+  // only when "single": the accuracy and ladder tables must not print "(absent)" for them.
+  const nlohmann::json s3{{"dim", 3}, {"resolution", {{"a", 7.0}, {"precision", "single"}}}};
+  const nlohmann::json s2{{"dim", 2}, {"resolution", {{"a", 10.0}}}};
+  REQUIRE(scene_value_at(s3, "resolution.membrane_update"));
+  CHECK(*scene_value_at(s3, "resolution.membrane_update") == "euler");
+  CHECK(*scene_value_at(s3, "resolution.precision") == "single");
+  REQUIRE(scene_value_at(s2, "resolution.precision"));
+  CHECK(*scene_value_at(s2, "resolution.precision") == "double");
+  CHECK(scene_value_at(s2, "resolution.kernel") == nullptr);  // not a left-out key: absent stays absent
+  // A fragment that is not a canonical scene gets no defaults.
+  CHECK(scene_value_at(nlohmann::json{{"resolution", {{"a", 5.0}}}}, "resolution.membrane_update") == nullptr);
+  const auto leaves = scene_leaves(s3);
+  REQUIRE(leaves.count("resolution.membrane_update"));
+  CHECK(leaves.at("resolution.membrane_update") == "\"euler\"");
+  CHECK(leaves.count("resolution.precision"));
+  // Told apart from an explicit other value.
+  nlohmann::json ab2 = s3;
+  ab2["resolution"]["membrane_update"] = "adams_bashforth2";
+  CHECK(differing_leaves({s3, ab2}, 0) == "membrane_update = euler");
 }
