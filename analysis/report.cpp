@@ -47,7 +47,9 @@ ReportSummary write_report(const ReportRequest& request) {
   if (block.stability) wanted.insert(block.stability->parameters.begin(), block.stability->parameters.end());
   if (block.bilinear && !block.bilinear->ladder.empty()) wanted.insert(block.bilinear->ladder);
   for (const auto& l : block.ladders) wanted.insert(l.key);  // study thesis judges a ladder's finest level by it
-  const ReportContext context{request, block, analyse_members(request, block, wanted)};
+  std::vector<MemberAnalysis> members = analyse_members(request, block, wanted);
+  record_varying_parameters(members);
+  const ReportContext context{request, block, std::move(members)};
 
   ReportOutputs outputs;
   outputs.fits["campaign"] = request.campaign_name;

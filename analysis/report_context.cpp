@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <optional>
+#include <set>
 #include <stdexcept>
 
 #include "analysis/scene_parameter.hpp"
@@ -190,6 +191,30 @@ std::string differing_leaves(const std::vector<nlohmann::json>& scenes, std::siz
     out += (out.empty() ? "" : ", ") + short_key + " = " + text;
   }
   return out;
+}
+
+void record_varying_parameters(std::vector<MemberAnalysis>& members) {
+  std::vector<std::map<std::string, std::string>> all;
+  std::set<std::string> keys;
+  for (const auto& m : members) {
+    all.push_back(m.scene.is_object() ? scene_leaves(m.scene) : std::map<std::string, std::string>{});
+    for (const auto& [k, v] : all.back()) keys.insert(k);
+  }
+  for (const auto& key : keys) {
+    std::set<std::string> values;
+    bool numeric = true;
+    for (const auto& l : all) {
+      const auto it = l.find(key);
+      if (it == l.end()) continue;
+      values.insert(it->second);
+      const nlohmann::json v = nlohmann::json::parse(it->second);
+      numeric = numeric && v.is_number();
+    }
+    if (values.size() < 2 || !numeric) continue;
+    for (std::size_t i = 0; i < members.size(); ++i)
+      if (const auto it = all[i].find(key); it != all[i].end())
+        members[i].parameters.emplace(key, nlohmann::json::parse(it->second).get<double>());
+  }
 }
 
 std::string incomplete_reason(const MemberAnalysis& m) {

@@ -45,6 +45,12 @@ struct ReportContext {
 std::vector<MemberAnalysis> analyse_members(const ReportRequest& request, const AnalysisBlock& block,
                                             const std::set<std::string>& wanted);
 
+// Records in every member's parameters the numeric scene values that differ among the members
+// (dotted keys, e.g. "resolution.mesh_level", "power_law.n", "c0"), beside the wanted ones:
+// fits.json then says what tells members apart, so study thesis can find a ladder's points and
+// study compare can match members, whatever the campaign sweeps.
+void record_varying_parameters(std::vector<MemberAnalysis>& members);
+
 std::string case_label(const std::string& c);
 
 // A slug made safe to name a file: [A-Za-z0-9_.-] kept, anything else becomes '_'.

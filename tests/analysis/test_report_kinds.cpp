@@ -131,6 +131,15 @@ TEST_CASE("Ladder report: extrapolation with the observed order, and refusals wi
   CHECK_THAT(two["note"].get<std::string>(), Contains("order assumed p = 1") && Contains("excluded: a = 7"));
   CHECK(two["error_estimate"].get<double>() == Approx(0.8 / 5 - 0.8 / 10).margin(1e-12));
   CHECK(files_with_nan(out) == std::vector<std::string>{});
+
+  // fits.json records the ladder key, and every numeric scene value that differs among the
+  // members, among each member's parameters (study thesis finds a ladder's points by them).
+  for (const auto& m : j["members"]) {
+    INFO(m["slug"]);
+    CHECK(m["parameters"].contains("resolution.a"));
+    CHECK(m["parameters"].contains("Ca"));
+    CHECK_FALSE(m["parameters"].contains("Re"));  // the same for every member: not recorded
+  }
 }
 
 TEST_CASE("Accuracy report: errors against a ladder or given reference, Pareto set, cheapest within bounds",
@@ -307,4 +316,28 @@ TEST_CASE("A key the canonical scene leaves out at its default reads as that def
   nlohmann::json ab2 = s3;
   ab2["resolution"]["membrane_update"] = "adams_bashforth2";
   CHECK(differing_leaves({s3, ab2}, 0) == "membrane_update = euler");
+}
+
+TEST_CASE("fits.json records the numeric scene values that tell members apart", "[analysis]") {
+  TempDir tmp("varying_parameters");
+  ReportRequest req;
+  req.campaign_name = "varying";
+  req.out_dir = (tmp.path / "report").string();
+  req.analysis = {{"fits", {"response"}}, {"figures", false}};
+  for (int level : {3, 4}) {
+    SyntheticMember m = ladder_member(5.0);
+    m.resolution = {{"a", 5.0}, {"mesh_level", level}};
+    add_member(req, tmp.path, "mesh", "level" + std::to_string(level), m);
+  }
+  write_report(req);
+  const auto j = nlohmann::json::parse(slurp(fs::path(req.out_dir) / "fits.json"));
+  REQUIRE(j["members"].size() == 2);
+  for (const auto& m : j["members"]) {
+    INFO(m["slug"]);
+    REQUIRE(m["parameters"].contains("resolution.mesh_level"));
+    CHECK(m["parameters"]["resolution.mesh_level"].get<double>() ==
+          (m["slug"] == "level3" ? 3.0 : 4.0));
+    CHECK_FALSE(m["parameters"].contains("resolution.a"));  // the same for both
+    CHECK(m["parameters"].contains("Ca"));                   // always recorded
+  }
 }
