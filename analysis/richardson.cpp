@@ -74,9 +74,12 @@ RichardsonResult richardson(std::vector<LadderLevel> levels, double assumed_orde
     r.order = assumed_order;
     r.order_observed = false;
     r.extrapolated = q1 - (q2 - q1) / std::expm1(assumed_order * std::log(h2 / h1));
-    r.error_estimate = std::abs(q1 - q2);
+    // The finest level's error under the stated order, as for three levels: |finest - q0|
+    // (2.5 |q1 - q2| for a = 5, 7 at p = 1). |q1 - q2| alone would understate it whenever
+    // the order is below about 2.
+    r.error_estimate = std::abs(q1 - r.extrapolated);
     r.reason = "two levels: order assumed p = " + format_number(assumed_order) +
-               ", error estimate = |finest - next|";
+               ", error estimate = |finest - extrapolated| at that order";
     return r;
   }
   const double h3 = levels[2].h, q3 = levels[2].q;

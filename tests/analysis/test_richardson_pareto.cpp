@@ -63,14 +63,22 @@ TEST_CASE("Richardson uses the three finest levels and refuses what it cannot do
   CHECK(one.finest == 0.3);
   CHECK_THAT(one.reason, Contains("one level"));
 
-  // Two levels: the order is assumed (stated), the error estimate is the difference.
+  // Two levels: the order is assumed (stated), the error estimate is |finest - extrapolated|
+  // at that order, as with three levels.
   const RichardsonResult two = richardson({{0.1, 0.31}, {0.2, 0.32}}, 1.0);
   REQUIRE(two.ok);
   CHECK_FALSE(two.order_observed);
   CHECK(two.order == 1.0);
   CHECK(two.extrapolated == Approx(0.30).margin(1e-14));  // 0.31 - (0.32 - 0.31) / (2 - 1)
-  CHECK(two.error_estimate == Approx(0.01).margin(1e-14));
+  CHECK(two.error_estimate == Approx(0.01).margin(1e-14));  // h ratio 2, p = 1: |q1 - q0| = |q1 - q2|
   CHECK_THAT(two.reason, Contains("order assumed p = 1"));
+  // a = 5 and 7 (h = 1/5, 1/7): |q1 - q0| = |q1 - q2| / ((7/5)^p - 1), 2.5 |q1 - q2| at p = 1.
+  const RichardsonResult a57 = richardson({{1.0 / 7, 0.40}, {1.0 / 5, 0.44}}, 1.0);
+  REQUIRE(a57.ok);
+  CHECK(a57.extrapolated == Approx(0.30).margin(1e-12));
+  CHECK(a57.error_estimate == Approx(0.10).margin(1e-12));
+  const RichardsonResult a57p2 = richardson({{1.0 / 7, 0.40}, {1.0 / 5, 0.44}}, 2.0);
+  CHECK(a57p2.error_estimate == Approx(0.04 / (49.0 / 25.0 - 1.0)).margin(1e-12));
 
   const RichardsonResult zigzag = richardson({{0.1, 0.30}, {0.2, 0.32}, {0.4, 0.31}}, 1.0);
   CHECK_FALSE(zigzag.ok);
