@@ -13,7 +13,6 @@
 #include "analysis/scene_parameter.hpp"
 #include "analysis/table.hpp"
 #include "solver/io/member_file.hpp"
-#include "solver/scene/scene.hpp"
 
 namespace capsule::analysis {
 
@@ -163,8 +162,8 @@ std::map<std::string, std::string> scene_leaves(const nlohmann::json& scene) {
   std::map<std::string, std::string> out;
   leaves(scene, "", out);
   // The keys a canonical scene leaves out while they hold their default, with that default.
-  if (scene.is_object() && scene.contains("resolution") && scene.contains("dim") && scene["dim"].is_number())
-    for (const auto& [key, value] : Scene::omitted_defaults(scene["dim"].get<int>())) out.emplace(key, value.dump());
+  if (const auto* d = omitted_scene_defaults(scene))
+    for (const auto& [key, value] : *d) out.emplace(key, value.dump());
   return out;
 }
 

@@ -71,13 +71,16 @@ SceneValue scene_parameter(const nlohmann::json& scene, const std::string& name,
 const nlohmann::json* scene_value_at(const nlohmann::json& scene, const std::string& dotted_key) {
   const nlohmann::json::json_pointer ptr(dotted_to_pointer(dotted_key));
   if (scene.contains(ptr)) return &scene.at(ptr);
-  // A canonical scene (one with a resolution block and a dim) leaves some keys out while
-  // they hold their default: an absent one means that default.
-  if (scene.is_object() && scene.contains("resolution") && scene.contains("dim") && scene["dim"].is_number()) {
-    const auto& d = Scene::omitted_defaults(scene["dim"].get<int>());
-    if (const auto it = d.find(dotted_key); it != d.end()) return &it->second;
-  }
+  // An absent key a canonical scene leaves out at its default means that default.
+  if (const auto* d = omitted_scene_defaults(scene))
+    if (const auto it = d->find(dotted_key); it != d->end()) return &it->second;
   return nullptr;
+}
+
+const std::map<std::string, nlohmann::json>* omitted_scene_defaults(const nlohmann::json& scene) {
+  if (!scene.is_object() || !scene.contains("resolution") || !scene.contains("dim") || !scene["dim"].is_number())
+    return nullptr;
+  return &Scene::omitted_defaults(scene["dim"].get<int>());
 }
 
 nlohmann::json scene_without(const nlohmann::json& scene, const std::string& pointer) {

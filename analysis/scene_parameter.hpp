@@ -22,6 +22,10 @@ SceneValue scene_parameter(const nlohmann::json& scene, const std::string& name,
 // The value at a dotted key ("resolution.a"), or nullptr when the scene has none.
 const nlohmann::json* scene_value_at(const nlohmann::json& scene, const std::string& dotted_key);
 
+// The keys a canonical scene (one with a dim and a resolution block) leaves out while they hold
+// their default, with that default (Scene::omitted_defaults); nullptr for any other JSON.
+const std::map<std::string, nlohmann::json>* omitted_scene_defaults(const nlohmann::json& scene);
+
 // The scene with the value at a JSON pointer removed (for grouping members that agree in
 // everything else); the scene itself when it has no such value.
 nlohmann::json scene_without(const nlohmann::json& scene, const std::string& pointer);

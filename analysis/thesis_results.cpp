@@ -10,6 +10,7 @@
 
 #include "analysis/analysis_block.hpp"
 #include "analysis/resolution_ladder.hpp"
+#include "analysis/table.hpp"
 
 namespace capsule::analysis {
 
@@ -43,11 +44,9 @@ std::string ThesisCampaign::judged_levels() const {
     std::sort(sorted.begin(), sorted.end(), [&](const auto& p, const auto& q) {
       return ladder_spacing(spacing, p.first) < ladder_spacing(spacing, q.first);
     });
-    for (const auto& [level, n] : sorted) {
-      std::ostringstream s;
-      s << level << " (" << n << (n == 1 ? " member)" : " members)");
-      levels += (levels.empty() ? "" : ", ") + s.str();
-    }
+    for (const auto& [level, n] : sorted)
+      levels += (levels.empty() ? "" : ", ") + format_number(level) + " (" + std::to_string(n) +
+                (n == 1 ? " member)" : " members)");
     out += (out.empty() ? "" : "; ") + key + ": " + (levels.empty() ? "no member records it" : levels);
   }
   return out;
