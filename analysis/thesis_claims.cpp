@@ -620,9 +620,19 @@ const char* k_memory_rule =
     "shape memory: the mean phase distance of the tracked elements from their rest positions (beta modulo pi) falls "
     "from the stop to the end by >= 30 % and >= 0.05 rad; none: it falls by < 20 % or < 0.05 rad";
 
-// Every recovery must satisfy `holds`; the verdict lists each member's figures.
+// Sec. 4.2: every ch4_3d_cases member whose case name starts with `prefix` must satisfy `holds`; the
+// verdict lists each member's figures, or says which members are missing.
 template <class Holds>
-void judge_every(ClaimResult& r, const std::vector<Recovery3d>& rec, const std::string& why, Holds holds) {
+void judge_every(ClaimResult& r, const ThesisResults& res, const std::string& prefix, const std::string& none,
+                 Holds holds) {
+  const ThesisCampaign& c = res.campaign("ch4_3d_cases");
+  if (!have_campaign(r, c)) return;
+  std::string why;
+  const auto rec = recoveries(res, c, prefix, why);
+  if (rec.empty()) {
+    r.measured = "cannot tell (members missing): " + (why.empty() ? none : why);
+    return;
+  }
   bool ok = true;
   std::string text;
   for (const auto& x : rec) {
@@ -640,15 +650,7 @@ ClaimResult claim_4_2_A(const ThesisResults& res) {
                         "ch4_3d_cases, cases A_c0_-2.09, A_c0_-1, A_c0_0",
                         std::string("every A member: recovered share (D_stop - D_end)/(D_stop - 0.51) >= 0.3 with D_end "
                                     "> 0.52 (partial), and shape memory (") + k_memory_rule + ")");
-  const ThesisCampaign& c = res.campaign("ch4_3d_cases");
-  if (!have_campaign(r, c)) return r;
-  std::string why;
-  const auto rec = recoveries(res, c, "A_", why);
-  if (rec.empty()) {
-    r.measured = "cannot tell (members missing): " + (why.empty() ? std::string("no case A member") : why);
-    return r;
-  }
-  judge_every(r, rec, why, [](const Recovery3d& x) {
+  judge_every(r, res, "A_", "no case A member", [](const Recovery3d& x) {
     return x.share >= 0.3 && x.D_end > k_D_biconcave_3d + 0.01 && x.memory();
   });
   return r;
@@ -661,15 +663,7 @@ ClaimResult claim_4_2_B(const ThesisResults& res) {
                         "ch4_3d_cases, case B",
                         std::string("every B member: D_end < 0.50 (more than 0.01 past the undeformed 0.51) or recovered "
                                     "share < 0.3, and no shape memory (") + k_memory_rule + ")");
-  const ThesisCampaign& c = res.campaign("ch4_3d_cases");
-  if (!have_campaign(r, c)) return r;
-  std::string why;
-  const auto rec = recoveries(res, c, "B", why);
-  if (rec.empty()) {
-    r.measured = "cannot tell (members missing): " + (why.empty() ? std::string("no case B member") : why);
-    return r;
-  }
-  judge_every(r, rec, why, [](const Recovery3d& x) {
+  judge_every(r, res, "B", "no case B member", [](const Recovery3d& x) {
     return (x.D_end < k_D_biconcave_3d - 0.01 || x.share < 0.3) && x.no_memory();
   });
   return r;
