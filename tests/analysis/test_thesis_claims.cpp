@@ -68,6 +68,25 @@ void write_ch4_2d_tt(const std::filesystem::path& dir, const std::string& path) 
                                                 {{"Ca", 0.135}, {"E_b", 0.0}, {"V", 1.0}, {"eta", 0.0}}, {}, path)}));
 }
 
+
+// A ch5_powerlaw member: D_xy rises as D_steady (1 - exp(-kt / 0.8)) under shear until kt 10.
+// Its scene names power_law.K (0 for Kelvin-Voigt) and, where given, conventions.sls_viscosity.
+void write_shear_member(const std::filesystem::path& file, double K, const std::string& sls, double D_steady) {
+  std::filesystem::create_directories(file.parent_path());
+  capsule::io::MemberWriter w(file.string());
+  nlohmann::json scene{{"dim", 3}, {"Ca", 0.1}, {"E_b", 0.0}, {"V", 1.0}, {"power_law", {{"K", K}, {"n", 0.64}}}};
+  if (!sls.empty()) scene["conventions"] = {{"sls_viscosity", sls}};
+  w.set_scene(scene);
+  for (int i = 0; i <= 200; ++i) {
+    const double t = 0.05 * i;
+    w.append({{"kt", t}, {"D_xy", D_steady * (1.0 - std::exp(-t / 0.8))}, {"theta", 0.3}, {"shear_on", 1.0}});
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  w.set_markers({{"t_max", nan}, {"D_max", nan}, {"t_stop", 10.0}, {"D_stop", D_steady}, {"t_min", nan}, {"D_min", nan},
+                 {"t_end", 10.0}, {"D_inf", nan}});
+  w.finish("complete");
+}
+
 }  // namespace
 
 TEST_CASE("Thesis claims: every claim cannot tell when no campaign has been run", "[analysis][thesis]") {
@@ -236,4 +255,39 @@ TEST_CASE("Thesis: THESIS.md from an empty results folder says cannot tell and l
   for (const char* topic : {"s_eps", "conventions.E_b_2d", "conventions.sls_viscosity", "G_s = E_s/3", "Resolution"})
     CHECK(md.find(topic) != std::string::npos);
   CHECK(md.find("| ch5_bilinear_ca02 | not run |") != std::string::npos);
+}
+
+TEST_CASE("Thesis claims: 5.2.1 pairs each power law with the Kelvin-Voigt member of equal physical viscosity", "[analysis][thesis]") {
+  TempDir tmp("thesis_claims_pl");
+  const auto dir = tmp.path / "ch5_powerlaw";
+  // K = 10 power law; its literal partner (eta = 10, dissertation reading: physically 10/3)
+  // deforms 40 % more; the physical partner (eta = 10) 5 % more.
+  write_shear_member(dir / "members/K10/member.h5", 10.0, "dissertation", 0.30);
+  write_shear_member(dir / "members/kv10/member.h5", 0.0, "dissertation", 0.50);
+  nlohmann::json members = nlohmann::json::array(
+      {member_json("K10", "K", {{"eta", 0.0}}, {}, "members/K10/member.h5"),
+       member_json("kv10", "kv", {{"eta", 10.0}}, {}, "members/kv10/member.h5")});
+  SECTION("only the literal pairing: cannot tell, with its numbers") {
+    write_fits(tmp.path, "ch5_powerlaw", members);
+    const auto& c = find_claim(evaluate_claims(ThesisResults(tmp.path.string())), "5.2.1", "initial deformation");
+    INFO(c.measured);
+    CHECK(c.verdict == Verdict::cannot_tell);
+    CHECK(c.measured.find("K = eta = 10: D power") != std::string::npos);
+  }
+  SECTION("an equal physical viscosity partner within 10 %: agrees; 40 % apart: differs") {
+    for (const double D_kv : {0.315, 0.50}) {
+      write_shear_member(dir / "members/kvp10/member.h5", 0.0, "physical", D_kv);
+      auto m = members;
+      m.push_back(member_json("kvp10", "kv_physical", {{"eta", 10.0}}, {}, "members/kvp10/member.h5"));
+      write_fits(tmp.path, "ch5_powerlaw", m);
+      const auto claims = evaluate_claims(ThesisResults(tmp.path.string()));
+      const auto& c = find_claim(claims, "5.2.1", "initial deformation");
+      INFO(c.measured);
+      CHECK(c.verdict == (D_kv < 0.4 ? Verdict::agrees : Verdict::differs));
+      CHECK(c.measured.find("K = physical eta = 10") != std::string::npos);
+      CHECK(c.measured.find("paired literally") != std::string::npos);
+      // steady D: power 0.30 against 0.315 is 4.8 % smaller (slightly smaller: agrees)
+      CHECK(find_claim(claims, "5.2.1", "steady").verdict == (D_kv < 0.4 ? Verdict::agrees : Verdict::differs));
+    }
+  }
 }
