@@ -553,13 +553,17 @@ struct Recovery3d {
   std::string why, slug, status;
   double E_b = k_nan, D_stop = k_nan, D_end = k_nan, t_end = k_nan;
   double share = k_nan;                          // (D_stop - D_end)/(D_stop - 0.51)
+  // The share means something only when the stop finds the capsule clearly deformed in D_xy; a
+  // swinging capsule stopped as it passes its rest D_xy (0.522 at a = 7) has none.
+  bool share_defined() const { return D_stop - k_D_biconcave_3d >= 0.03; }
   double phase_stop = k_nan, phase_end = k_nan;  // mean phase distance of the tracked elements
   double phase_fall() const { return phase_stop - phase_end; }
   bool memory() const { return phase_fall() >= 0.3 * phase_stop && phase_fall() >= 0.05; }
   bool no_memory() const { return phase_fall() < 0.2 * phase_stop || phase_fall() < 0.05; }
   std::string text() const {
     return slug + ": D_stop " + num(D_stop) + ", D_end " + num(D_end) + " (kt " + num(t_end) + ", " +
-           (status == "complete" ? std::string("complete") : status) + "), recovered share " + num(share) +
+           (status == "complete" ? std::string("complete") : status) + "), recovered share " +
+           (share_defined() ? num(share) : std::string("not defined (D_stop within 0.03 of 0.51)")) +
            ", mean phase distance " + num(phase_stop) + " -> " + num(phase_end) + " rad";
   }
 };
@@ -620,8 +624,9 @@ const char* k_memory_rule =
     "shape memory: the mean phase distance of the tracked elements from their rest positions (beta modulo pi) falls "
     "from the stop to the end by >= 30 % and >= 0.05 rad; none: it falls by < 20 % or < 0.05 rad";
 
-// Sec. 4.2: every ch4_3d_cases member whose case name starts with `prefix` must satisfy `holds`; the
-// verdict lists each member's figures, or says which members are missing.
+// Sec. 4.2: every ch4_3d_cases member whose case name starts with `prefix` must satisfy `holds`
+// (nullopt: the rule cannot judge that member); the verdict lists each member's figures, or says
+// which members are missing.
 template <class Holds>
 void judge_every(ClaimResult& r, const ThesisResults& res, const std::string& prefix, const std::string& none,
                  Holds holds) {
@@ -633,13 +638,18 @@ void judge_every(ClaimResult& r, const ThesisResults& res, const std::string& pr
     r.measured = "cannot tell (members missing): " + (why.empty() ? none : why);
     return;
   }
-  bool ok = true;
+  bool ok = true, judged = false;
   std::string text;
   for (const auto& x : rec) {
-    ok = ok && holds(x);
-    text += (text.empty() ? "" : "; ") + x.text();
+    const std::optional<bool> h = holds(x);
+    if (h) judged = true, ok = ok && *h;
+    text += (text.empty() ? "" : "; ") + x.text() + (h ? "" : " (not judged)");
   }
   if (!why.empty()) text += "; not judged: " + why;
+  if (!judged) {
+    r.measured = "cannot tell (no member the rule can judge): " + text;
+    return;
+  }
   set(r, ok, text);
 }
 
@@ -649,8 +659,10 @@ ClaimResult claim_4_2_A(const ThesisResults& res) {
   ClaimResult r = claim("4.2", "case A (biconcave reference, constant c0) recovers biconcavity partly, with shape memory",
                         "ch4_3d_cases, cases A_c0_-2.09, A_c0_-1, A_c0_0",
                         std::string("every A member: recovered share (D_stop - D_end)/(D_stop - 0.51) >= 0.3 with D_end "
-                                    "> 0.52 (partial), and shape memory (") + k_memory_rule + ")");
-  judge_every(r, res, "A_", "no case A member", [](const Recovery3d& x) {
+                                    "> 0.52 (partial), and shape memory (") + k_memory_rule +
+                            "); a member stopped with D_stop within 0.03 of 0.51 has no share and is not judged");
+  judge_every(r, res, "A_", "no case A member", [](const Recovery3d& x) -> std::optional<bool> {
+    if (!x.share_defined()) return std::nullopt;
     return x.share >= 0.3 && x.D_end > k_D_biconcave_3d + 0.01 && x.memory();
   });
   return r;
@@ -662,9 +674,12 @@ ClaimResult claim_4_2_B(const ThesisResults& res) {
   ClaimResult r = claim("4.2", "case B (c0 = 2 kappa) does not recover its shape (passes the undeformed D_xy) and has no shape memory",
                         "ch4_3d_cases, case B",
                         std::string("every B member: D_end < 0.50 (more than 0.01 past the undeformed 0.51) or recovered "
-                                    "share < 0.3, and no shape memory (") + k_memory_rule + ")");
-  judge_every(r, res, "B", "no case B member", [](const Recovery3d& x) {
-    return (x.D_end < k_D_biconcave_3d - 0.01 || x.share < 0.3) && x.no_memory();
+                                    "share < 0.3, and no shape memory (") + k_memory_rule +
+                            "); the share is not defined for D_stop within 0.03 of 0.51");
+  judge_every(r, res, "B", "no case B member", [](const Recovery3d& x) -> std::optional<bool> {
+    if (x.D_end < k_D_biconcave_3d - 0.01) return x.no_memory();
+    if (!x.share_defined()) return std::nullopt;
+    return x.share < 0.3 && x.no_memory();
   });
   return r;
 }
@@ -675,7 +690,8 @@ ClaimResult claim_4_2_C(const ThesisResults& res) {
   ClaimResult r = claim("4.2", "case C (spherical reference) recovers more completely than A, without shape memory",
                         "ch4_3d_cases, cases C and A_c0_-2.09",
                         std::string("every C member: recovered share above that of the A_c0_-2.09 member with the same "
-                                    "E_b, and no shape memory (") + k_memory_rule + ")");
+                                    "E_b, and no shape memory (") + k_memory_rule +
+                            "); a pair where either D_stop is within 0.03 of 0.51 has no shares to compare");
   const ThesisCampaign& c = res.campaign("ch4_3d_cases");
   if (!have_campaign(r, c)) return r;
   std::string why;
@@ -687,6 +703,10 @@ ClaimResult claim_4_2_C(const ThesisResults& res) {
     const auto a = std::find_if(ra.begin(), ra.end(), [&](const Recovery3d& y) { return y.E_b == x.E_b; });
     if (a == ra.end()) {
       why += (why.empty() ? "" : "; ") + x.slug + ": no A_c0_-2.09 member at E_b " + num(x.E_b);
+      continue;
+    }
+    if (!x.share_defined() || !a->share_defined()) {
+      why += (why.empty() ? "" : "; ") + x.text() + " against A: share not defined";
       continue;
     }
     judged = true;

@@ -87,6 +87,25 @@ void write_shear_member(const std::filesystem::path& file, double K, const std::
   w.finish("complete");
 }
 
+
+// A ch4_3d_cases member: shear until kt 15 with D_xy = D_stop at the stop, then D_xy relaxes
+// to D_end by kt 65; two tracked elements whose phase distance falls from 0.8 to `phase_end`.
+void write_table1_member(const std::filesystem::path& file, double D_stop, double D_end, double phase_end) {
+  std::filesystem::create_directories(file.parent_path());
+  capsule::io::MemberWriter w(file.string());
+  w.set_scene({{"dim", 3}, {"Ca", 0.5}, {"E_b", 0.025}, {"V", 2.0}, {"shape", "biconcave"}});
+  for (int i = 0; i <= 650; ++i) {
+    const double t = 0.1 * i, s = t <= 15.0 ? 0.0 : 1.0 - std::exp(-(t - 15.0) / 5.0);
+    const double D = t <= 15.0 ? D_stop : D_stop + (D_end - D_stop) * s;
+    const double phase = 0.8 + (phase_end - 0.8) * s;
+    w.append({{"kt", t}, {"D_xy", D}, {"theta", 0.3}, {"shear_on", t <= 15.0 ? 1.0 : 0.0}}, {phase, -phase});
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  w.set_markers({{"t_max", nan}, {"D_max", nan}, {"t_stop", 15.0}, {"D_stop", D_stop}, {"t_min", nan}, {"D_min", nan},
+                 {"t_end", 65.0}, {"D_inf", nan}});
+  w.finish("complete");
+}
+
 }  // namespace
 
 TEST_CASE("Thesis claims: every claim cannot tell when no campaign has been run", "[analysis][thesis]") {
@@ -290,4 +309,25 @@ TEST_CASE("Thesis claims: 5.2.1 pairs each power law with the Kelvin-Voigt membe
       CHECK(find_claim(claims, "5.2.1", "steady").verdict == (D_kv < 0.4 ? Verdict::agrees : Verdict::differs));
     }
   }
+}
+
+TEST_CASE("Thesis claims: case A's partial recovery is judged from D_stop, and not at all when D_stop is near 0.51", "[analysis][thesis]") {
+  TempDir tmp("thesis_claims_t1");
+  const auto judge = [&](double D_stop, double D_end, double phase_end) {
+    write_table1_member(tmp.path / "ch4_3d_cases/members/A/member.h5", D_stop, D_end, phase_end);
+    write_fits(tmp.path, "ch4_3d_cases",
+               nlohmann::json::array({member_json("A", "A_c0_-2.09", {{"E_b", 0.025}}, {}, "members/A/member.h5")}));
+    return find_claim(evaluate_claims(ThesisResults(tmp.path.string())), "4.2", "case A");
+  };
+  // 0.57 -> 0.53: share 0.67, D_end above 0.52, phase distance 0.8 -> 0.2 (memory): agrees
+  CHECK(judge(0.57, 0.53, 0.2).verdict == Verdict::agrees);
+  // the same without memory (0.8 -> 0.75): differs
+  CHECK(judge(0.57, 0.53, 0.75).verdict == Verdict::differs);
+  // past the undeformed shape (0.57 -> 0.46: not partial): differs
+  CHECK(judge(0.57, 0.46, 0.2).verdict == Verdict::differs);
+  // stopped at D_xy 0.522, 0.012 from the rest value: the share is not defined
+  const ClaimResult c = judge(0.522, 0.522, 0.1);
+  INFO(c.measured);
+  CHECK(c.verdict == Verdict::cannot_tell);
+  CHECK(c.measured.find("not defined") != std::string::npos);
 }
