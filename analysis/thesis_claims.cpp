@@ -832,10 +832,9 @@ struct Pair {
 // The physical surface viscosity (units a mu_a) of a Kelvin-Voigt member of ch5_powerlaw.
 double physical_eta(const ShearMember& m) {
   const double eta = parameter(*m.member, "eta");
-  const auto& scene = m.data->attributes.contains("scene") ? m.data->attributes["scene"] : nlohmann::json();
-  const bool dissertation = scene.is_object() && scene.contains("conventions") &&
-                            scene["conventions"].value("sls_viscosity", std::string("physical")) == "dissertation";
-  return dissertation ? eta / 3.0 : eta;
+  if (!m.data->attributes.contains("scene")) return eta;
+  const nlohmann::json* sls = scene_value_at(m.data->attributes["scene"], "conventions.sls_viscosity");
+  return sls && *sls == "dissertation" ? eta / 3.0 : eta;  // absent: the scene's default, physical
 }
 
 ClaimResult claim_5_2_pairs(const ThesisResults& res, bool initial) {
