@@ -84,6 +84,17 @@ void SpeedCalibration::add(const CostEstimate& c, double steps, int threads, dou
   model_ += model;
   ++members;
   factor = measured_ / model_;
+  if (c.kt_is_bound && c.expected_steps() > 0 && steps > 0) {
+    measured_steps_ += steps;
+    expected_steps_ += c.expected_steps();
+    ++length_members;
+    length_factor = measured_steps_ / expected_steps_;
+  }
+}
+
+double SpeedCalibration::seconds(const CostEstimate& c, int threads) const {
+  const double steps = c.kt_is_bound ? std::min(c.steps(), c.expected_steps() * length_factor) : c.expected_steps();
+  return c.seconds_for_steps(steps, threads) * factor;
 }
 
 }  // namespace capsule::study

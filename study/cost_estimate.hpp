@@ -35,14 +35,24 @@ struct CostEstimate {
 CostEstimate estimate_cost(const nlohmann::json& canonical_scene);
 
 // Measured speed of finished members against the model: factor = sum of measured wall
-// seconds / sum of model seconds for the steps they took (1 with no measurement).
+// seconds / sum of model seconds for the steps they took (1 with no measurement). And, for
+// members whose phases end on a condition, how long those phases really ran: length_factor =
+// sum of their steps / sum of the model's expected steps (the model's "window + 1.6 kt" is
+// the default members' end; a campaign whose recoveries run to their caps is several times
+// longer, and its members that ran say by how much).
 struct SpeedCalibration {
   double factor = 1.0;
   int members = 0;
+  double length_factor = 1.0;
+  int length_members = 0;
   void add(const CostEstimate& c, double steps, int threads, double wall_seconds);
+  // Seconds for a member that has not run: its expected steps (corrected by length_factor,
+  // never beyond its caps) at the model's speed corrected by factor.
+  double seconds(const CostEstimate& c, int threads) const;
 
  private:
   double measured_ = 0, model_ = 0;
+  double measured_steps_ = 0, expected_steps_ = 0;
 };
 
 }  // namespace capsule::study

@@ -25,7 +25,7 @@ std::string format_number(double x) {
 }  // namespace
 
 double estimated_member_seconds(const CostEstimate& cost, int dim, int threads, const MeasuredSpeed& speed) {
-  return cost.expected_seconds(threads) * speed.for_dim(dim).factor;
+  return speed.for_dim(dim).seconds(cost, threads);
 }
 
 CampaignEstimate estimate_campaign(const CampaignSurvey& survey, const MeasuredSpeed& speed, int cores) {
@@ -155,6 +155,10 @@ void print_plan(const Campaign& plan_campaign, const ResultsLayout& layout, std:
       if (k.members > 0)
         out << "  " << dim << "D cost model corrected by x" << format_number(k.factor) << " from the measured speed of "
             << k.members << " member" << (k.members > 1 ? "s" : "") << " that ran\n";
+      if (k.length_members > 0)
+        out << "  " << dim << "D phases that end on a condition counted x" << format_number(k.length_factor)
+            << " their model length, as " << k.length_members << " member" << (k.length_members > 1 ? "s" : "")
+            << " that ran took\n";
     }
     out << "  (seconds: '~' estimated from the cost model, README \"Time and memory estimates\"; a phase that ends on a\n"
            "   condition counts at its expected end, a theta/beta stop at its cap)\n";

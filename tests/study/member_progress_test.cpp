@@ -128,4 +128,18 @@ TEST_CASE("study plan estimates seconds and memory per member and the campaign's
   k.add(c2, 1000, 1, 2 * c2.seconds_for_steps(1000, 1));
   CHECK(k.factor == Approx(2));
   CHECK(k.members == 1);
+  CHECK(k.length_members == 0);  // c2's phases have set durations: nothing to learn about lengths
+  CHECK(k.seconds(c2, 1) == Approx(2 * c2.expected_seconds(1)));
+
+  // A member whose condition-ended phases ran 5 times the model's expected length (a recovery
+  // that runs to its cap): the next member of that kind is estimated 5 times as long, never
+  // beyond its caps.
+  SpeedCalibration long_phases;
+  long_phases.add(c3, 5 * c3.expected_steps(), 1, c3.seconds_for_steps(5 * c3.expected_steps(), 1));
+  CHECK(long_phases.factor == Approx(1));
+  CHECK(long_phases.length_members == 1);
+  CHECK(long_phases.length_factor == Approx(5));
+  CHECK(long_phases.seconds(c3, 1) == Approx(c3.seconds_for_steps(5 * c3.expected_steps(), 1)));
+  long_phases.add(c3, 1000 * c3.expected_steps(), 1, c3.seconds_for_steps(1000 * c3.expected_steps(), 1));
+  CHECK(long_phases.seconds(c3, 1) == Approx(c3.seconds_for_steps(c3.steps(), 1)));  // the caps bound it
 }
