@@ -5,6 +5,8 @@
 #include <set>
 #include <stdexcept>
 
+#include "analysis/published_curves.hpp"
+
 namespace capsule::analysis {
 
 namespace {
@@ -199,6 +201,36 @@ StabilitySpec parse_stability(const nlohmann::json& s, const std::string& where)
   return spec;
 }
 
+std::vector<PublishedSpec> parse_published(const nlohmann::json& p, const std::string& where) {
+  const std::string path = "/published";
+  if (!p.is_array() || p.empty())
+    fail(where, path, "expected a non-empty array of {\"curve\": <name>, \"where\": {<parameter>: <value>}[, \"case\": <name>]}");
+  std::vector<PublishedSpec> out;
+  const auto names = published_curve_names();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const std::string at = path + "/" + std::to_string(i);
+    const auto& e = p[i];
+    if (!e.is_object()) fail(where, at, "expected an object with curve[, where, case]");
+    only_keys(e, {"curve", "where", "case"}, where, at);
+    if (!e.contains("curve")) fail(where, at + "/curve", "required key missing");
+    PublishedSpec spec;
+    spec.curve = a_string(e["curve"], where, at + "/curve");
+    if (std::find(names.begin(), names.end(), spec.curve) == names.end()) {
+      std::string known;
+      for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+      fail(where, at + "/curve", "unknown curve \"" + spec.curve + "\" (known: " + known + ")");
+    }
+    if (e.contains("case")) spec.case_name = a_string(e["case"], where, at + "/case");
+    if (e.contains("where")) {
+      const auto& w = e["where"];
+      if (!w.is_object()) fail(where, at + "/where", "expected an object of scene parameter -> number");
+      for (const auto& [key, value] : w.items()) spec.where[key] = a_number(value, where, at + "/where/" + key);
+    }
+    out.push_back(spec);
+  }
+  return out;
+}
+
 }  // namespace
 
 const std::vector<std::string>& marker_quantities() {
@@ -238,8 +270,9 @@ AnalysisBlock parse_analysis_block(const nlohmann::json& block, const std::strin
   AnalysisBlock out;
   if (block.is_null()) return out;
   if (!block.is_object()) fail(where, "", "expected an object");
-  only_keys(block, {"fits", "parameters", "tables", "bilinear", "ladder", "accuracy", "stability", "figures"}, where,
-            "");
+  only_keys(block,
+            {"fits", "parameters", "tables", "bilinear", "ladder", "accuracy", "stability", "published", "figures"},
+            where, "");
 
   if (block.contains("fits")) {
     out.fits = string_array(block["fits"], where, "/fits", false);
@@ -346,6 +379,7 @@ AnalysisBlock parse_analysis_block(const nlohmann::json& block, const std::strin
 
   if (block.contains("accuracy")) out.accuracy = parse_accuracy(block["accuracy"], out.fits, out.ladders, where);
   if (block.contains("stability")) out.stability = parse_stability(block["stability"], where);
+  if (block.contains("published")) out.published = parse_published(block["published"], where);
 
   if (block.contains("figures")) {
     if (!block["figures"].is_boolean()) fail(where, "/figures", "expected true or false");

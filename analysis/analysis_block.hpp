@@ -56,6 +56,13 @@ struct StabilitySpec {
   std::vector<std::string> parameters;    // swept scene parameters (names as in tables[].x)
 };
 
+// A published curve D(kt) (published_curves.hpp) and the members it is compared with.
+struct PublishedSpec {
+  std::string curve;                     // embedded curve name (published_curve_names())
+  std::string case_name;                 // "" = members of any case
+  std::map<std::string, double> where;   // scene parameter (as tables[].x) -> the member's value
+};
+
 struct AnalysisBlock {
   std::vector<std::string> fits{"response", "recovery"};
   std::map<std::string, std::string> parameters;  // name -> JSON pointer into the canonical scene
@@ -64,6 +71,7 @@ struct AnalysisBlock {
   std::vector<LadderSpec> ladders;
   std::optional<AccuracySpec> accuracy;
   std::optional<StabilitySpec> stability;
+  std::vector<PublishedSpec> published;
   bool figures = true;
 };
 

@@ -46,6 +46,8 @@ ReportSummary write_report(const ReportRequest& request) {
   for (const auto& t : block.tables) wanted.insert(t.x);
   if (block.stability) wanted.insert(block.stability->parameters.begin(), block.stability->parameters.end());
   if (block.bilinear && !block.bilinear->ladder.empty()) wanted.insert(block.bilinear->ladder);
+  for (const auto& p : block.published)
+    for (const auto& [name, value] : p.where) wanted.insert(name);
   for (const auto& l : block.ladders) wanted.insert(l.key);  // study thesis judges a ladder's finest level by it
   std::vector<MemberAnalysis> members = analyse_members(request, block, wanted);
   record_varying_parameters(members);
@@ -64,6 +66,7 @@ ReportSummary write_report(const ReportRequest& request) {
   sections.push_back(ladder_section());
   sections.push_back(accuracy_section());
   sections.push_back(stability_section());
+  sections.push_back(published_section());
   for (const auto& section : sections) section->write(context, out, outputs);
   outputs.write_text(out / "fits.json", outputs.fits.dump(2) + "\n");
 

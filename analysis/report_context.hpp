@@ -27,6 +27,7 @@ struct MemberAnalysis {
   std::map<std::string, std::string> missing;      // parameter -> why not found
   MemberFits fits;
   std::vector<double> kt, D;                       // for figures
+  std::vector<double> D_extent;                    // D from the extents L, W (3D members; published curves)
   std::vector<double> gamma_min, gamma_max;        // 3D power-law members: surface shear rate range (Fig. 64)
   std::map<std::string, double> markers;
   double wall_seconds = k_nan;                     // the member file's run time (attribute wall_seconds)

@@ -40,5 +40,6 @@ std::unique_ptr<ReportSection> artificial_viscosity_section(); // artificial_vis
 std::unique_ptr<ReportSection> ladder_section();               // ladder_section.cpp
 std::unique_ptr<ReportSection> accuracy_section();             // accuracy_section.cpp
 std::unique_ptr<ReportSection> stability_section();            // stability_section.cpp
+std::unique_ptr<ReportSection> published_section();            // published_section.cpp
 
 }  // namespace capsule::analysis
