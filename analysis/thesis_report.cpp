@@ -25,7 +25,9 @@ Table campaign_table(const ThesisResults& results) {
   t.title = "Campaigns read";
   t.header = {"campaign", "fits.json", "members in it", "complete", "member files found",
               "ladder levels judged (finest shipped per point)"};
-  for (const auto& name : thesis_campaigns()) {
+  std::vector<std::string> names = validation_campaigns();
+  names.insert(names.end(), thesis_campaigns().begin(), thesis_campaigns().end());
+  for (const auto& name : names) {
     const ThesisCampaign& c = results.campaign(name);
     if (!c.found) {
       t.rows.push_back({name, "not run", "", "", "", ""});
