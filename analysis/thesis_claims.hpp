@@ -1,5 +1,5 @@
 #pragma once
-// The claims of the dissertation's Chapters 3-5, each a small rule with a stated numeric
+// The claims of the dissertation's Chapters 2-5, each a small rule with a stated numeric
 // criterion, judged from the shipped campaigns' fitted times (and, where a claim is about
 // a curve, their member files) as agrees / differs / cannot tell, with the numbers.
 #include <string>

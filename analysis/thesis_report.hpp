@@ -1,6 +1,6 @@
 #pragma once
 // results/THESIS.md: the dissertation's Table 2, its ratios b/a and the claims of Chapters
-// 3-5 beside what the shipped campaigns measure, and the known causes of disagreement.
+// 2-5 beside what the shipped campaigns measure, and the known causes of disagreement.
 // Regenerated from results/<campaign>/report/fits.json and member files only; a campaign
 // not yet run gives "cannot tell", never an error.
 #include <string>
