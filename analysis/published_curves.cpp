@@ -1,7 +1,6 @@
 #include "analysis/published_curves.hpp"
 
 #include <algorithm>
-#include <numeric>
 #include <sstream>
 #include <stdexcept>
 
@@ -44,8 +43,7 @@ void parse_curve_csv(const std::string& text, PublishedCurve& curve) {
     const auto comma = line.find(',');
     try {
       if (comma == std::string::npos) throw std::invalid_argument("no comma");
-      std::size_t used = 0;
-      const double t = std::stod(line.substr(0, comma), &used);
+      const double t = std::stod(line.substr(0, comma));
       const double d = std::stod(line.substr(comma + 1));
       points.emplace_back(t, d);
     } catch (const std::exception&) {

@@ -16,16 +16,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// y(t) by linear interpolation in a series sorted by t; NaN outside it.
-double interpolate(const std::vector<double>& t, const std::vector<double>& y, double at) {
-  if (t.empty() || y.size() != t.size() || at < t.front() || at > t.back()) return k_nan;
-  const auto hi = std::lower_bound(t.begin(), t.end(), at);
-  const std::size_t j = static_cast<std::size_t>(hi - t.begin());
-  if (j == 0) return y[0];
-  const double w = (at - t[j - 1]) / (t[j] - t[j - 1]);
-  return y[j - 1] + w * (y[j] - y[j - 1]);
-}
-
 struct Differences {
   std::size_t points = 0;
   double bias = k_nan, max_abs = k_nan, rms = k_nan;
@@ -38,7 +28,7 @@ Differences differences(const PublishedCurve& c, const std::vector<double>& kt, 
   double sum = 0, sum2 = 0, largest = 0;
   for (std::size_t i = 0; i < c.kt.size(); ++i) {
     if (c.kt[i] < begin || c.kt[i] > end) continue;
-    const double m = interpolate(kt, D, c.kt[i]);
+    const double m = interpolate_series(kt, D, c.kt[i]);
     if (!std::isfinite(m)) continue;
     const double diff = m - c.D[i];
     sum += diff;
@@ -117,8 +107,8 @@ class PublishedSection : public ReportSection {
             d_curve = curve.D[i];
             break;
           }
-        const double d_xy = interpolate(m.kt, m.D, kt_last);
-        const double d_ext = has_extent ? interpolate(m.kt, m.D_extent, kt_last) : k_nan;
+        const double d_xy = interpolate_series(m.kt, m.D, kt_last);
+        const double d_ext = has_extent ? interpolate_series(m.kt, m.D_extent, kt_last) : k_nan;
         std::string note;
         const std::size_t beyond = static_cast<std::size_t>(
             std::count_if(curve.kt.begin(), curve.kt.end(), [end](double x) { return x > end; }));

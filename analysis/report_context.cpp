@@ -224,6 +224,13 @@ std::string incomplete_reason(const MemberAnalysis& m) {
   return "member not complete: " + m.status;
 }
 
+double interpolate_series(const std::vector<double>& t, const std::vector<double>& y, double at) {
+  if (t.empty() || y.size() != t.size() || !(at >= t.front() && at <= t.back())) return k_nan;
+  const std::size_t j = static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), at) - t.begin());
+  if (j == 0) return y[0];
+  return y[j - 1] + (y[j] - y[j - 1]) * (at - t[j - 1]) / (t[j] - t[j - 1]);
+}
+
 nlohmann::json json_number(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
 
 void write_text(const fs::path& path, const std::string& text, std::vector<std::string>& files) {

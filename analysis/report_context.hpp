@@ -69,6 +69,9 @@ std::vector<std::string> fit_keys(const MemberFits& fits);
 // A parameter's value when every member of the group agrees, else NaN.
 double common_value(const std::vector<const MemberAnalysis*>& group, const std::string& name);
 
+// y(at) by linear interpolation in a series sorted by t; NaN outside [t.front(), t.back()].
+double interpolate_series(const std::vector<double>& t, const std::vector<double>& y, double at);
+
 // A number for fits.json: null when not finite (JSON has no NaN).
 nlohmann::json json_number(double x);
 

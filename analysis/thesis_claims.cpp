@@ -6,6 +6,7 @@
 #include <limits>
 #include <optional>
 
+#include "analysis/report_context.hpp"
 #include "analysis/scene_parameter.hpp"
 #include "analysis/table2_compare.hpp"
 
@@ -13,7 +14,6 @@ namespace capsule::analysis {
 
 namespace {
 
-constexpr double k_nan = std::numeric_limits<double>::quiet_NaN();
 // Undeformed D_xy of the biconcave capsules (README "Conventions": D_xy).
 constexpr double k_D_biconcave_2d = 0.812;
 constexpr double k_D_biconcave_3d = 0.51;
@@ -780,12 +780,6 @@ double scene_value(const io::MemberData& d, const std::string& pointer) {
   return v.found ? v.value : k_nan;
 }
 
-double value_at(const std::vector<double>& kt, const std::vector<double>& y, double t) {
-  for (std::size_t i = 1; i < kt.size(); ++i)
-    if (kt[i] >= t) return y[i - 1] + (y[i] - y[i - 1]) * (t - kt[i - 1]) / (kt[i] - kt[i - 1]);
-  return k_nan;
-}
-
 struct ShearMember {
   const ThesisMember* member = nullptr;
   std::optional<io::MemberData> data;
@@ -811,9 +805,9 @@ std::vector<ShearMember> shear_members(const ThesisResults& res, const ThesisCam
     }
     const auto& kt = kt_it->second;
     const auto& D = d_it->second;
-    s.D_at_1 = value_at(kt, D, 1.0);
+    s.D_at_1 = interpolate_series(kt, D, 1.0);
     const double t_stop = s.data->markers.count("t_stop") ? s.data->markers.at("t_stop") : k_nan;
-    s.D_stop = std::isfinite(t_stop) ? value_at(kt, D, t_stop) : k_nan;
+    s.D_stop = std::isfinite(t_stop) ? interpolate_series(kt, D, t_stop) : k_nan;
     if (std::isnan(s.D_stop) && !D.empty() && !std::isfinite(t_stop)) s.D_stop = D.back();
     out.push_back(std::move(s));
   }

@@ -11,6 +11,7 @@
 
 #include "analysis/published_curves.hpp"
 #include "analysis/report.hpp"
+#include "analysis/report_context.hpp"
 #include "solver/io/member_file.hpp"
 #include "tests/analysis/synthetic_campaign.hpp"
 
@@ -76,6 +77,14 @@ TEST_CASE("Published curves: the embedded copies are the files in tests/data/ref
     for (std::size_t i = 1; i < embedded.kt.size(); ++i) CHECK(embedded.kt[i] >= embedded.kt[i - 1]);  // sorted
   }
   CHECK_THROWS_WITH(published_curve("no_such_curve"), Contains("known: "));
+}
+
+TEST_CASE("interpolate_series: exact on a straight line, the end points included, NaN outside", "[analysis][published]") {
+  const std::vector<double> t{0.0, 0.5, 2.0}, y{1.0, 2.0, 5.0};  // y = 1 + 2 t
+  for (const double at : {0.0, 0.25, 0.5, 1.3, 2.0}) CHECK(interpolate_series(t, y, at) == Approx(1.0 + 2.0 * at));
+  CHECK(std::isnan(interpolate_series(t, y, -0.1)));
+  CHECK(std::isnan(interpolate_series(t, y, 2.1)));
+  CHECK(std::isnan(interpolate_series({}, {}, 0.0)));
 }
 
 TEST_CASE("Published report: differences at the curve's points during the shear, and refusals", "[analysis][published]") {
