@@ -53,7 +53,9 @@ struct Simulation2D::Impl {
   static membrane2d::Membrane make_membrane(const Scene& s, const Units& u, const std::vector<int>& n) {
     const double cx = 0.5 * n[0], cy = 0.5 * n[1];
     const double incline = 0.25 * std::numbers::pi;  // 45 degrees (Sec. 2.4)
-    auto xy = s.shape == "biconcave" ? membrane2d::biconcave(s.segments, s.a, cx, cy, incline)
+    // "dissertation": (24)-(25) with the printed a, i.e. equivalent radius 0.740 a (Scene::biconcave_2d).
+    const double r_eq = s.biconcave_2d == "dissertation" ? s.a * membrane2d::biconcave_equivalent_radius() : s.a;
+    auto xy = s.shape == "biconcave" ? membrane2d::biconcave(s.segments, r_eq, cx, cy, incline)
                                      : membrane2d::circle(s.segments, s.a, cx, cy, incline);
     return membrane2d::Membrane(std::move(xy), {u.E_s, u.E_B, u.mu_s});
   }

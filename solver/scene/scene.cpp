@@ -240,7 +240,11 @@ Scene Scene::from_json(const json& j, const std::string& source) {
       c.fail("sls_viscosity", "the standard linear solid is the 3D membrane's", "\"physical\" in 2D");
     if (s.dim == 3 && s.E_b_2d != "dimensionless")
       c.fail("E_b_2d", "the 2D bending convention does not apply to a 3D scene", "\"dimensionless\" in 3D");
-    c.refuse_unknown({"sls_viscosity", "E_b_2d"});
+    s.biconcave_2d = c.choice("biconcave_2d", std::string("equivalent"), {"equivalent", "dissertation"});
+    if (s.biconcave_2d != "equivalent" && (s.dim != 2 || s.shape != "biconcave"))
+      c.fail("biconcave_2d", "the size reading of (24)-(25) applies to the 2D biconcave capsule only",
+             "\"equivalent\" unless dim is 2 and shape is \"biconcave\"");
+    c.refuse_unknown({"sls_viscosity", "E_b_2d", "biconcave_2d"});
   }
   {
     json res = r.object("resolution", false);
@@ -339,6 +343,8 @@ json Scene::to_json() const {
   j["volume_penalty"] = volume_penalty;
   j["power_law"] = {{"K", power_law_K}, {"n", power_law_n}};
   j["conventions"] = {{"sls_viscosity", sls_viscosity}, {"E_b_2d", E_b_2d}};
+  // Written only when not the default, so the ids of members run before the key stay.
+  if (biconcave_2d != "equivalent") j["conventions"]["biconcave_2d"] = biconcave_2d;
   j["resolution"] = {{"a", a}, {"domain", domain}, {"segments", segments},
                      {"mesh_level", mesh_level}, {"tau", tau}, {"kernel", kernel}};
   // 2D: written only when single, so the ids of 2D members run before the key existed stay.

@@ -57,8 +57,14 @@ struct Scene {
   //    element's shear modulus is g_1(0)/2 = E_m/3 with tau_m = mu_s/E_m, so the limit has mu_s/3.
   //  E_b_2d (2D): "dimensionless": E_B = E_b a^2 E_s; "dissertation": (35) E_B = E_b a E_s in
   //    the text's 2D units (a = 0.5, h = 0.05), i.e. E_B = 2 E_b a^2 E_s.
+  //  biconcave_2d (2D biconcave): "equivalent": (24)-(25) scaled to enclose the area of the
+  //    circle of radius a, as the text defines the equivalent radius (Sec. 2.1);
+  //    "dissertation": (24)-(25) drawn with the printed a, which encloses the area of a circle
+  //    of radius 0.740 a (the "characteristic length 1.48a" of Sec. 2.4 is its diameter).
+  //    Ca, E_b, Re and the lattice keep the printed a in both.
   std::string sls_viscosity = "physical";
   std::string E_b_2d = "dimensionless";
+  std::string biconcave_2d = "equivalent";
   double a = 10;               // capsule (equivalent) radius in lattice nodes
   std::vector<double> domain;  // in units of a: 2D {16, 12}, 3D {10, 10, 8}
   int segments = 140;          // 2D membrane segments
