@@ -19,6 +19,7 @@ std::string num(double x) {
   s << x;
   return s.str();
 }
+std::string after_note(double after_kt) { return after_kt > 0 ? " (crossings counted from kt = " + num(after_kt) + ")" : ""; }
 }  // namespace
 
 Protocol::Protocol(const Scene& scene)
@@ -76,14 +77,14 @@ void Protocol::observe(double kt, double D, double theta, double beta) {
                 num(shear_.window_kt) + " kt)";
       }
     } else if (shear_.until == "theta") {
-      if (have_prev_ && crossed(prev_theta_, theta, shear_.value, std::numbers::pi)) {
+      if (have_prev_ && kt >= shear_.after_kt - time_slack && crossed(prev_theta_, theta, shear_.value, std::numbers::pi)) {
         stop = true;
-        note_ = "shear stopped when theta reached " + num(shear_.value);
+        note_ = "shear stopped when theta reached " + num(shear_.value) + after_note(shear_.after_kt);
       }
     } else if (shear_.until == "beta") {
-      if (have_prev_ && crossed(prev_beta_, beta, shear_.value, 2 * std::numbers::pi)) {
+      if (have_prev_ && kt >= shear_.after_kt - time_slack && crossed(prev_beta_, beta, shear_.value, 2 * std::numbers::pi)) {
         stop = true;
-        note_ = "shear stopped when beta reached " + num(shear_.value);
+        note_ = "shear stopped when beta reached " + num(shear_.value) + after_note(shear_.after_kt);
       }
     }
     if (!stop && shear_.until != "time" && kt >= shear_.max_kt - time_slack) {

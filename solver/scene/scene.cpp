@@ -146,6 +146,7 @@ PhaseSpec read_phase(const json& j, const std::string& source, const std::string
   }
   if (p.until == "theta" || p.until == "beta") {
     p.value = r.number("value", std::nullopt, -10.0, 10.0);
+    p.after_kt = r.number("after_kt", 0.0, 0.0, 1e4);
   } else {
     p.value = r.number("value", 0.0, 0.0, 0.0);
   }
@@ -153,9 +154,12 @@ PhaseSpec read_phase(const json& j, const std::string& source, const std::string
   p.window_kt = r.number("window_kt", 2.0, 0.0, 100.0, true);
   p.max_kt = r.number("max_kt", 50.0, 0.0, 1e4, true);
   if (p.until == "time" && p.kt > p.max_kt) p.max_kt = p.kt;
+  if (p.after_kt >= p.max_kt)
+    r.fail("after_kt", "the stop condition would never be tested before max_kt = " + std::to_string(p.max_kt),
+           "[0, max_kt)");
   if (shear) {
     p.oscillatory_period_kt = r.number("oscillatory_period_kt", 0.0, 0.0, 1e4);
-    r.refuse_unknown({"until", "kt", "value", "tolerance", "window_kt", "max_kt", "oscillatory_period_kt"});
+    r.refuse_unknown({"until", "kt", "value", "after_kt", "tolerance", "window_kt", "max_kt", "oscillatory_period_kt"});
   } else {
     // A turning point of a slow recovery (a tank-treading biconcave capsule's D_xy falls for
     // ~15 kt, then rises for ~75 kt, Fig. 30) is stationary over any fixed short window; a
@@ -322,6 +326,8 @@ json phase_json(const PhaseSpec& p, bool shear) {
             {"window_kt", p.window_kt}, {"max_kt", p.max_kt}};
   if (shear) j["oscillatory_period_kt"] = p.oscillatory_period_kt;
   else j["window_fraction"] = p.window_fraction;
+  // Written only when set, so the ids of members run before the key stay.
+  if (shear && p.after_kt > 0) j["after_kt"] = p.after_kt;
   return j;
 }
 }  // namespace

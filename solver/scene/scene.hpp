@@ -19,7 +19,8 @@ struct SceneError : std::runtime_error {
 // One phase of the protocol. Shear: until "time" (kt), "steady" (D_xy range over the last
 // window_kt below tolerance), "theta" (inclination reaches value, rad, from above: tumbling,
 // Sec. 4.1.2), "beta" (phase angle of the tracked element reaches value: tank-treading,
-// Sec. 4.1.1). Recover: until "time" (kt) or "settled" (as "steady"). max_kt caps the phase.
+// Sec. 4.1.1), counted from after_kt on. Recover: until "time" (kt) or "settled" (as "steady").
+// max_kt caps the phase.
 struct PhaseSpec {
   std::string until;
   double kt = 0;            // duration for until == "time"
@@ -31,6 +32,9 @@ struct PhaseSpec {
   // stop), so a slow, non-monotone recovery is not taken as settled at a turning point.
   double window_fraction = 0.5;
   double oscillatory_period_kt = 0;  // shear only: > 0 -> wall speed (H/2) k sin(pi t / T) (Sec. 5.2.2)
+  // shear only, "theta" / "beta": a crossing counts from this kt on, so the stop falls in the
+  // steady tumbling or tank-treading the text stops in (Sec. 4.1), not in the start-up.
+  double after_kt = 0;
 };
 
 struct Scene {

@@ -143,6 +143,36 @@ TEST_CASE("angle conditions stop on crossing, not on wrap-around", "[protocol]")
   CHECK_FALSE(q.shear_on());
 }
 
+TEST_CASE("after_kt: an angle crossing counts only once the start-up is over", "[protocol]") {
+  // A tumbling inclination theta = pi/4 - 0.5 kt, wrapped into (-pi/2, pi/2]: it crosses
+  // pi/6 first at kt = (pi/4 - pi/6)/0.5 = 0.524 (the start-up, Sec. 4.1.2's capsule has not
+  // tumbled yet), then once a period pi/0.5 = 6.283 later: kt = 6.807, 13.09, ...
+  auto wrap = [](double th) { return th - std::numbers::pi * std::floor((th + std::numbers::pi / 2) / std::numbers::pi); };
+  auto stop_at = [&](double after_kt) {
+    json shear = {{"until", "theta"}, {"value", std::numbers::pi / 6}};
+    if (after_kt > 0) shear["after_kt"] = after_kt;
+    Protocol p(scene_with({{"shear", shear}, {"recover", {{"until", "time"}, {"kt", 1}}}}));
+    for (int i = 0; p.shear_on() && i < 1000; ++i) p.observe(0.05 * i, 0.3, wrap(std::numbers::pi / 4 - 0.025 * i), 0.0);
+    return p.markers()["t_stop"];
+  };
+  CHECK(stop_at(0) == Approx(0.55).margin(1e-9));   // first row at or past 0.524
+  CHECK(stop_at(5) == Approx(6.85).margin(1e-9));   // first row at or past 6.807
+  CHECK(stop_at(7) == Approx(13.10).margin(1e-9));  // first row at or past 13.09
+}
+
+TEST_CASE("after_kt is refused where it cannot apply, and written only when set", "[protocol]") {
+  json j = {{"dim", 2}, {"shape", "circle"}, {"Ca", 0.05}, {"E_b", 0.0}, {"V", 1.0}, {"eta", 0.0},
+            {"protocol", {{"shear", {{"until", "theta"}, {"value", 0.5}, {"after_kt", 60}}},
+                          {"recover", {{"until", "time"}, {"kt", 1}}}}}};
+  CHECK_THROWS_WITH(Scene::from_json(j, "t.json"), Catch::Contains("protocol.shear.after_kt"));
+  j["protocol"]["shear"]["after_kt"] = 20;
+  CHECK(Scene::from_json(j, "t.json").to_json()["protocol"]["shear"]["after_kt"] == 20.0);
+  j["protocol"]["shear"].erase("after_kt");
+  CHECK(!Scene::from_json(j, "t.json").to_json()["protocol"]["shear"].contains("after_kt"));
+  j["protocol"]["shear"] = {{"until", "steady"}, {"after_kt", 5}};
+  CHECK_THROWS_WITH(Scene::from_json(j, "t.json"), Catch::Contains("after_kt"));
+}
+
 TEST_CASE("max_kt ends a phase whose condition never comes, and says so", "[protocol]") {
   Protocol p(scene_with({{"shear", {{"until", "steady"}, {"max_kt", 3}}}, {"recover", {{"until", "settled"}, {"max_kt", 2}}}}));
   drive(p, [](double t, bool) { return 0.1 * std::sin(3 * t); });
