@@ -33,7 +33,8 @@ const std::vector<KnownDeviation>& known_deviations() {
        "undeformed 0.812 within Fig. 30's 75 kt), and k tau_R2 ~ E_b^-0.74 between E_b 0.0014 and 0.005 (text: "
        "inversely proportional; toolkit's readings -0.30). ch4_2d_tt therefore runs both of the text's readings, "
        "ch4_2d_tt_equivalent the toolkit's. k tau_R1 stays O(1) (0.66-0.75) against the text's O(0.1): the fast "
-       "drop of D_xy lasts about a kt, as long as the fluid takes to stop (spin-down, below). For the tumbling "
+       "drop of D_xy lasts about a kt, about as long as the fluid takes to stop (spin-down, below), but halving Re "
+       "(the text's Re read in its units) moves k tau_R1 only from 0.75 to 0.63 (probe case text_Re). For the tumbling "
        "capsule (probe_biconcave_size_tumble, Fig. 38's) the printed size does not help: (90) gives k tau_R1 / k "
        "tau_R2 4.44 / 6.66 (printed size) and 4.00 / 10.5 (both readings) against 2.50 / 8.27, so ch4_2d_tumble keeps "
        "the toolkit's readings.",
