@@ -37,13 +37,35 @@ std::vector<Table2RowComparison> compare_table2_rows(const ThesisResults& result
       out.push_back(row);
       continue;
     }
-    for (const BilinearEntry& b : read_bilinear_entries(c.name, c.fits))
+    // The finest level first; while a ladder's finest level is still too small to fit (it is
+    // being run), the finest level whose fit succeeded stands in, and its label says which.
+    const std::vector<BilinearEntry> entries = read_bilinear_entries(c.name, c.fits);
+    const BilinearEntry* chosen = nullptr;
+    for (const BilinearEntry& b : entries)
       if (table2_row_for(b) == &ref) {
-        row.found = true;
-        row.entry = b;
-        row.coefficients = compare_with_table2(b.fit, ref);
-        break;
+        if (!chosen) chosen = &b;
+        if (b.fit.ok) {
+          chosen = &b;
+          break;
+        }
       }
+    if (chosen) {
+      row.found = true;
+      row.entry = *chosen;
+      const BilinearEntry* finest = nullptr;
+      for (const BilinearEntry& b : entries)
+        if (table2_row_for(b) == &ref) {
+          finest = &b;
+          break;
+        }
+      if (finest != chosen)  // a stand-in: its own ladder estimates belong to the finest level
+        for (const char* k : {"a", "b", "c"}) {
+          row.entry.ladder_error.erase(k);
+          row.entry.ladder_note[k] = "the finest level, " + finest->level_key + " = " + format_number(finest->level) +
+                                     ", not fitted yet (" + finest->fit.reason + ")";
+        }
+      row.coefficients = compare_with_table2(chosen->fit, ref);
+    }
     if (!row.found)
       row.why = c.name + " has no bilinear fit of " + ref.target + " with Ca " + format_number(ref.Ca) + ", E_b " +
                 format_number(ref.E_b) + " in its fits.json";

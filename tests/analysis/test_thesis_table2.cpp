@@ -87,3 +87,30 @@ TEST_CASE("Thesis ratios b/a: delta method from half-widths and from the covaria
   CHECK(d.half_width == Approx(h.half_width));
   CHECK(d.method.find("half-widths") != std::string::npos);
 }
+
+TEST_CASE("Thesis Table 2: while a ladder's finest level is too small to fit, the finest fitted level stands in", "[analysis][thesis]") {
+  TempDir tmp("thesis_table2_level");
+  const FitResult coarse = known_fit("bilinear (95)-(96)", {{"a", {0.05, 0.01}}, {"b", {0.07, 0.03}}, {"c", {0.8, 0.1}}}, 0.88, 15);
+  nlohmann::json fine = bilinear_json("response.k_tau_s", 0.2, 0.0, FitResult::failure("bilinear (95)-(96)", "too few members (2 < 5)"));
+  fine["level"] = {{"key", "resolution.a"}, {"value", 7.0}};
+  nlohmann::json five = bilinear_json("response.k_tau_s", 0.2, 0.0, coarse);
+  five["level"] = {{"key", "resolution.a"}, {"value", 5.0}};
+  write_fits(tmp.path, "ch5_bilinear_ca02", nlohmann::json::array(), nlohmann::json::array({fine, five}));
+  const ThesisResults results(tmp.path.string());
+  const auto rows = compare_table2_rows(results);
+  REQUIRE(rows.size() == 6);
+  const auto& r = rows[4];  // k_tau_s, Ca 0.2, E_b 0
+  REQUIRE(r.found);
+  CHECK(r.entry.level == 5.0);
+  REQUIRE(r.coefficients.size() == 3);
+  CHECK(r.coefficients[0].measured);
+  CHECK(r.coefficients[0].difference == Approx(0.05 - 0.0417));
+  CHECK(r.entry.ladder_note.at("a") == "the finest level, resolution.a = 7, not fitted yet (too few members (2 < 5))");
+  // With no level fitted at all, the finest one is shown with its reason.
+  write_fits(tmp.path, "ch5_bilinear_ca02", nlohmann::json::array(), nlohmann::json::array({fine}));
+  const ThesisResults none(tmp.path.string());
+  const auto rows2 = compare_table2_rows(none);
+  REQUIRE(rows2[4].found);
+  CHECK(rows2[4].entry.level == 7.0);
+  CHECK_FALSE(rows2[4].coefficients[0].measured);
+}
