@@ -40,24 +40,20 @@ std::vector<Table2RowComparison> compare_table2_rows(const ThesisResults& result
     // The finest level first; while a ladder's finest level is still too small to fit (it is
     // being run), the finest level whose fit succeeded stands in, and its label says which.
     const std::vector<BilinearEntry> entries = read_bilinear_entries(c.name, c.fits);
+    const BilinearEntry* finest = nullptr;
     const BilinearEntry* chosen = nullptr;
     for (const BilinearEntry& b : entries)
       if (table2_row_for(b) == &ref) {
-        if (!chosen) chosen = &b;
+        if (!finest) finest = &b;
         if (b.fit.ok) {
           chosen = &b;
           break;
         }
       }
+    if (!chosen) chosen = finest;
     if (chosen) {
       row.found = true;
       row.entry = *chosen;
-      const BilinearEntry* finest = nullptr;
-      for (const BilinearEntry& b : entries)
-        if (table2_row_for(b) == &ref) {
-          finest = &b;
-          break;
-        }
       if (finest != chosen)  // a stand-in: its own ladder estimates belong to the finest level
         for (const char* k : {"a", "b", "c"}) {
           row.entry.ladder_error.erase(k);
