@@ -53,12 +53,20 @@ struct Series {
 };
 
 using Keep = std::function<bool(const ThesisMember&)>;
+// Why a member cannot stand for the text's point ("" when it can): it is listed among the gaps.
+using Skip = std::function<std::string(const ThesisMember&)>;
 
 Series series(const ThesisCampaign& c, const std::string& case_name, const std::string& x, const std::string& column,
-              const Keep& keep = {}) {
+              const Keep& keep = {}, const Skip& skip = {}) {
   Series s;
   for (const ThesisMember* m : c.in_case(case_name)) {
     if (keep && !keep(*m)) continue;
+    if (skip) {
+      if (const std::string why = skip(*m); !why.empty()) {
+        s.gaps.push_back(m->slug + ": " + why);
+        continue;
+      }
+    }
     const double xv = parameter(*m, x);
     const ColumnValue v = column_value(m->fits, column);
     if (std::isnan(xv)) s.gaps.push_back(m->slug + ": " + x + " not recorded");
@@ -110,6 +118,35 @@ void set(ClaimResult& r, bool ok, const std::string& measured) {
 bool part_missing(std::string& why, const std::string& reason) {
   why += (why.empty() ? "" : "; ") + reason;
   return false;
+}
+
+// Secs. 4.1.1-4.1.2 fit recoveries that start at an inclination (theta = -pi/3, pi/6) or a
+// phase angle (beta = 0.49): a member whose shear was to end there but ran to its cap max_kt
+// recovers from another state and does not stand for the text's point. "" when its stop came,
+// when the shear ends otherwise, or when the member file is not there to tell (its fits.json
+// entry is judged as recorded).
+std::string missed_stop(const ThesisResults& res, const ThesisMember& m) {
+  std::string why;
+  const auto data = res.member_data(m, why, true);
+  if (!data) return "";
+  const nlohmann::json& scene = data->attributes.contains("scene") ? data->attributes["scene"] : nlohmann::json();
+  if (!scene.is_object() || !scene.contains("protocol") || !scene["protocol"].contains("shear")) return "";
+  const nlohmann::json& shear = scene["protocol"]["shear"];
+  const std::string until = shear.value("until", "");
+  if (until != "theta" && until != "beta") return "";
+  const double cap = shear.value("max_kt", k_nan);
+  const auto t = data->markers.find("t_stop");
+  const double t_stop = t == data->markers.end() ? k_nan : t->second;
+  const std::string target = until + " = " + num(shear.value("value", k_nan));
+  if (std::isnan(t_stop)) return "the shear never stopped (no t_stop); it was to stop at " + target;
+  // The shear's last row lies within a step of its cap.
+  if (!std::isnan(cap) && t_stop >= cap - 1e-6 * std::max(1.0, cap))
+    return "the shear ran to its cap kt " + num(cap) + " without reaching " + target + ", so the recovery is not the text's";
+  return "";
+}
+
+Skip missed_stop_in(const ThesisResults& res) {
+  return [&res](const ThesisMember& m) { return missed_stop(res, m); };
 }
 
 bool is_refused_for_r2(const FitResult& f) { return !f.ok && f.reason.rfind("the model does not describe the data", 0) == 0; }
@@ -352,8 +389,8 @@ ClaimResult claim_orders(const ThesisResults& res, const std::string& section, c
                             ") over every member with the fit; >= 3 members");
   const ThesisCampaign& c = res.campaign(campaign);
   if (!have_campaign(r, c)) return r;
-  const Series s1 = series(c, "", "Ca", fit + ".k_tau_R1");
-  const Series s2 = series(c, "", "Ca", fit + ".k_tau_R2");
+  const Series s1 = series(c, "", "Ca", fit + ".k_tau_R1", {}, missed_stop_in(res));
+  const Series s2 = series(c, "", "Ca", fit + ".k_tau_R2", {}, missed_stop_in(res));
   if (!have_points(r, s1, 3, "members with k tau_R1") || !have_points(r, s2, 3, "members with k tau_R2")) return r;
   const auto y1 = s1.ys(), y2 = s2.ys();
   const double m1 = median(y1), m2 = median(y2);
@@ -361,14 +398,17 @@ ClaimResult claim_orders(const ThesisResults& res, const std::string& section, c
       "k tau_R1 median " + num(m1) + " (" + num(*std::min_element(y1.begin(), y1.end())) + " to " +
           num(*std::max_element(y1.begin(), y1.end())) + ", " + std::to_string(y1.size()) + " members); k tau_R2 median " +
           num(m2) + " (" + num(*std::min_element(y2.begin(), y2.end())) + " to " +
-          num(*std::max_element(y2.begin(), y2.end())) + ", " + std::to_string(y2.size()) + " members)");
+          num(*std::max_element(y2.begin(), y2.end())) + ", " + std::to_string(y2.size()) + " members)" +
+          (s1.gaps.empty() ? "" : "; not counted for k tau_R1: " + first_gaps(s1.gaps)) +
+          (s2.gaps.empty() ? "" : "; not counted for k tau_R2: " + first_gaps(s2.gaps)));
   return r;
 }
 
 // Exponent of a fitted time against one parameter of a case, judged against [lo, hi].
 bool exponent_part(const ThesisCampaign& c, const std::string& case_name, const std::string& x, const std::string& column,
-                   double lo, double hi, const Keep& keep, std::string& text, std::string& why, bool& ok) {
-  const Series s = series(c, case_name, x, column, keep);
+                   double lo, double hi, const Keep& keep, std::string& text, std::string& why, bool& ok,
+                   const Skip& skip = {}) {
+  const Series s = series(c, case_name, x, column, keep, skip);
   if (s.points.size() < 3)
     return part_missing(why, "case " + case_name + ": " + std::to_string(s.points.size()) + " values of " + x +
                                  " with " + bare_time(column) + ", need 3" +
@@ -376,6 +416,7 @@ bool exponent_part(const ThesisCampaign& c, const std::string& case_name, const 
   const LineFit f = fit_power(s.xs(), s.ys());
   ok = ok && f.ok && f.slope >= lo && f.slope <= hi;
   text += (text.empty() ? "" : "; ") + x + " exponent " + num(f.slope) + " (" + s.listing(x) + ")";
+  if (!s.gaps.empty()) text += " [not counted: " + first_gaps(s.gaps) + "]";
   return true;
 }
 
@@ -389,8 +430,9 @@ ClaimResult claim_4_1_1_R1(const ThesisResults& res) {
   if (!have_campaign(r, c)) return r;
   bool ok = true;
   std::string text, why;
-  const bool have_ca = exponent_part(c, "Ca", "Ca", "two_phase.k_tau_R1", 0.7, 1.3, {}, text, why, ok);
-  const Series s = series(c, "eta", "eta", "two_phase.k_tau_R1");
+  const bool have_ca = exponent_part(c, "Ca", "Ca", "two_phase.k_tau_R1", 0.7, 1.3, {}, text, why, ok,
+                                     missed_stop_in(res));
+  const Series s = series(c, "eta", "eta", "two_phase.k_tau_R1", {}, missed_stop_in(res));
   bool have_eta = s.points.size() >= 3;
   if (!have_eta) {
     part_missing(why, "case eta: " + std::to_string(s.points.size()) + " values of eta with k_tau_R1, need 3" +
@@ -399,7 +441,7 @@ ClaimResult claim_4_1_1_R1(const ThesisResults& res) {
     const LineFit f = fit_line(s.xs(), s.ys());
     ok = ok && f.ok && f.r_squared >= 0.9 && f.slope > 0;
     text += (text.empty() ? "" : "; ") + std::string("eta: slope ") + num(f.slope) + ", R^2 " + num(f.r_squared) +
-            " (" + s.listing("eta") + ")";
+            " (" + s.listing("eta") + ")" + (s.gaps.empty() ? "" : " [not counted: " + first_gaps(s.gaps) + "]");
   }
   if (!have_ca || !have_eta) {
     r.measured = "cannot tell (members missing): " + why + (text.empty() ? "" : "; so far " + text);
@@ -419,10 +461,11 @@ ClaimResult claim_4_1_1_R2(const ThesisResults& res) {
   if (!have_campaign(r, c)) return r;
   bool ok = true;
   std::string text, why;
-  bool have = exponent_part(c, "Ca", "Ca", "two_phase.k_tau_R2", 0.7, 1.3, {}, text, why, ok);
-  have = exponent_part(c, "V", "V", "two_phase.k_tau_R2", 0.7, 1.3, {}, text, why, ok) && have;
+  bool have = exponent_part(c, "Ca", "Ca", "two_phase.k_tau_R2", 0.7, 1.3, {}, text, why, ok, missed_stop_in(res));
+  have = exponent_part(c, "V", "V", "two_phase.k_tau_R2", 0.7, 1.3, {}, text, why, ok, missed_stop_in(res)) && have;
   have = exponent_part(c, "E_b", "E_b", "two_phase.k_tau_R2", -1.3, -0.7,
-                       [](const ThesisMember& m) { return parameter(m, "E_b") > 0.0; }, text, why, ok) && have;
+                       [](const ThesisMember& m) { return parameter(m, "E_b") > 0.0; }, text, why, ok,
+                       missed_stop_in(res)) && have;
   if (!have) {
     r.measured = "cannot tell (members missing): " + why + (text.empty() ? "" : "; so far " + text);
     return r;
@@ -484,7 +527,9 @@ ClaimResult claim_4_1_2_r2(const ThesisResults& res) {
   for (const ThesisMember* m : c.in_case("")) {
     const auto it = m->fits.find("double_exponential");
     if (it == m->fits.end()) continue;
-    if (is_refused_for_r2(it->second)) {
+    if (const std::string missed = missed_stop(res, *m); !missed.empty()) {
+      gaps.push_back(m->slug + ": " + missed);
+    } else if (is_refused_for_r2(it->second)) {
       ++n;
       failures.push_back(m->slug + " R^2 < 0.5");
     } else if (it->second.ok) {
@@ -502,7 +547,8 @@ ClaimResult claim_4_1_2_r2(const ThesisResults& res) {
   }
   set(r, failures.empty(),
       std::to_string(n) + " fits, lowest R^2 " + num(lowest) +
-          (failures.empty() ? "" : "; " + std::to_string(failures.size()) + " at or below 0.97: " + first_gaps(failures)));
+          (failures.empty() ? "" : "; " + std::to_string(failures.size()) + " at or below 0.97: " + first_gaps(failures)) +
+          (gaps.empty() ? "" : "; not counted: " + first_gaps(gaps)));
   return r;
 }
 
@@ -522,6 +568,10 @@ ClaimResult claim_4_1_2_fig38(const ThesisResults& res) {
       base = m;
   if (!base) {
     r.measured = "cannot tell (members missing): no member with Ca 0.4, E_b 0.05, V 5, eta 0 in fits.json";
+    return r;
+  }
+  if (const std::string missed = missed_stop(res, *base); !missed.empty()) {
+    r.measured = "cannot tell: " + base->slug + ": " + missed;
     return r;
   }
   const ColumnValue v = column_value(base->fits, "double_exponential.k_tau_R1");

@@ -106,6 +106,26 @@ void write_table1_member(const std::filesystem::path& file, double D_stop, doubl
   w.finish("complete");
 }
 
+// A ch4_2d_tumble member whose shear ends when theta falls to -pi/3, capped at kt 50: it stops
+// at `t_stop` (50 = the cap: the crossing never came), then recovers for 50 kt.
+void write_tumble_member(const std::filesystem::path& file, double t_stop) {
+  std::filesystem::create_directories(file.parent_path());
+  capsule::io::MemberWriter w(file.string());
+  w.set_scene({{"dim", 2}, {"Ca", 0.4}, {"E_b", 0.05}, {"V", 5.0}, {"eta", 0.0}, {"shape", "biconcave"},
+               {"protocol", {{"shear", {{"until", "theta"}, {"value", -M_PI / 3}, {"max_kt", 50.0}}},
+                             {"recover", {{"until", "time"}, {"kt", 50.0}}}}}});
+  for (int i = 0; i <= 200; ++i) {
+    const double t = 0.5 * i;
+    if (t > t_stop + 50.0) break;
+    const double D = t <= t_stop ? 0.5 : 0.8 - 0.3 * std::exp(-(t - t_stop) / 2.0);
+    w.append({{"kt", t}, {"D_xy", D}, {"theta", t <= t_stop ? -0.5 : 0.2}, {"shear_on", t <= t_stop ? 1.0 : 0.0}});
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  w.set_markers({{"t_max", nan}, {"D_max", nan}, {"t_stop", t_stop}, {"D_stop", 0.5}, {"t_min", nan}, {"D_min", nan},
+                 {"t_end", t_stop + 50.0}, {"D_inf", 0.8}});
+  w.finish("complete");
+}
+
 }  // namespace
 
 TEST_CASE("Thesis claims: every claim cannot tell when no campaign has been run", "[analysis][thesis]") {
@@ -363,5 +383,45 @@ TEST_CASE("Thesis claims: Fig. 12's G independence agrees within 2 %, differs be
     INFO(c.measured);
     CHECK(c.verdict == (D50 > 0.35 ? Verdict::agrees : Verdict::differs));
     CHECK(c.measured.find("G 10: 0.371") != std::string::npos);  // D_xy at the stop, kt 5: 0.372 (1 - e^-6.25)
+  }
+}
+
+TEST_CASE("Thesis claims: a tumbling member whose theta stop never came is not counted (Sec. 4.1.2)", "[analysis][thesis]") {
+  TempDir tmp("thesis_claims_stop");
+  const auto dir = tmp.path / "ch4_2d_tumble";
+  // Three members with (90) fits of the text's orders (k tau_R1 0.2, k tau_R2 2); the third
+  // stops at `third_stop`.
+  const auto judge = [&](double third_stop) {
+    nlohmann::json members = nlohmann::json::array();
+    const std::vector<std::pair<double, double>> points{{0.2, 14.0}, {0.4, 16.0}, {0.6, third_stop}};
+    for (const auto& [ca, t_stop] : points) {
+      const std::string slug = "Ca" + short_number(ca), rel = "members/" + slug + "/member.h5";
+      write_tumble_member(dir / rel, t_stop);
+      members.push_back(member_json(slug, "Ca", {{"Ca", ca}, {"E_b", 0.05}, {"V", 5.0}, {"eta", 0.0}},
+                                    {{"double_exponential", known_fit("double exponential (90)",
+                                                                      {{"k_tau_R1", {0.2, 0.01}}, {"k_tau_R2", {2.0, 0.1}}},
+                                                                      0.99)}},
+                                    rel));
+    }
+    write_fits(tmp.path, "ch4_2d_tumble", members);
+    return evaluate_claims(ThesisResults(tmp.path.string()));
+  };
+  SECTION("every stop came: the orders agree") {
+    const auto claims = judge(18.0);
+    const auto& c = find_claim(claims, "4.1.2", "O(0.1)");
+    INFO(c.measured);
+    CHECK(c.verdict == Verdict::agrees);
+    CHECK(find_claim(claims, "4.1.2", "R^2 > 0.97").verdict == Verdict::agrees);
+  }
+  SECTION("one shear ran to its cap: that member is not counted, leaving too few") {
+    const auto claims = judge(50.0);
+    const auto& c = find_claim(claims, "4.1.2", "O(0.1)");
+    INFO(c.measured);
+    CHECK(c.verdict == Verdict::cannot_tell);
+    CHECK(c.measured.find("Ca0.6: the shear ran to its cap kt 50 without reaching theta") != std::string::npos);
+    const auto& r2 = find_claim(claims, "4.1.2", "R^2 > 0.97");
+    INFO(r2.measured);
+    CHECK(r2.verdict == Verdict::cannot_tell);
+    CHECK(r2.measured.find("ran to its cap") != std::string::npos);
   }
 }
