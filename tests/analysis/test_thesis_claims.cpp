@@ -108,16 +108,19 @@ void write_table1_member(const std::filesystem::path& file, double D_stop, doubl
 
 // A ch4_2d_tumble member whose shear ends when theta falls to -pi/3, capped at kt 50: it stops
 // at `t_stop` (50 = the cap: the crossing never came), then recovers for 50 kt.
-void write_tumble_member(const std::filesystem::path& file, double t_stop) {
+// With `folded`, D_xy is -0.07 at the stop and jumps to 0.6 one output interval later (a folded
+// outline, whose chords are discontinuous).
+void write_tumble_member(const std::filesystem::path& file, double t_stop, bool folded = false) {
   std::filesystem::create_directories(file.parent_path());
   capsule::io::MemberWriter w(file.string());
   w.set_scene({{"dim", 2}, {"Ca", 0.4}, {"E_b", 0.05}, {"V", 5.0}, {"eta", 0.0}, {"shape", "biconcave"},
                {"protocol", {{"shear", {{"until", "theta"}, {"value", -M_PI / 3}, {"max_kt", 50.0}}},
                              {"recover", {{"until", "time"}, {"kt", 50.0}}}}}});
-  for (int i = 0; i <= 200; ++i) {
-    const double t = 0.5 * i;
+  for (int i = 0; i <= 2000; ++i) {
+    const double t = i / 20.0;  // an output interval of 0.05 kt, as ch4_2d_tumble's
     if (t > t_stop + 50.0) break;
-    const double D = t <= t_stop ? 0.5 : 0.8 - 0.3 * std::exp(-(t - t_stop) / 2.0);
+    double D = t <= t_stop ? 0.5 : 0.8 - 0.3 * std::exp(-(t - t_stop) / 2.0);
+    if (folded) D = t <= t_stop ? -0.07 : 0.8 - 0.2 * std::exp(-(t - t_stop) / 2.0);
     w.append({{"kt", t}, {"D_xy", D}, {"theta", t <= t_stop ? -0.5 : 0.2}, {"shear_on", t <= t_stop ? 1.0 : 0.0}});
   }
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -391,16 +394,17 @@ TEST_CASE("Thesis claims: a tumbling member whose theta stop never came is not c
   const auto dir = tmp.path / "ch4_2d_tumble";
   // Three members with (90) fits of the text's orders (k tau_R1 0.2, k tau_R2 2); the third
   // stops at `third_stop`.
-  const auto judge = [&](double third_stop) {
+  const auto judge = [&](double third_stop, bool third_folded = false) {
     nlohmann::json members = nlohmann::json::array();
     const std::vector<std::pair<double, double>> points{{0.2, 14.0}, {0.4, 16.0}, {0.6, third_stop}};
     for (const auto& [ca, t_stop] : points) {
       const std::string slug = "Ca" + short_number(ca), rel = "members/" + slug + "/member.h5";
-      write_tumble_member(dir / rel, t_stop);
+      const bool folded = third_folded && ca > 0.5;
+      write_tumble_member(dir / rel, t_stop, folded);
       members.push_back(member_json(slug, "Ca", {{"Ca", ca}, {"E_b", 0.05}, {"V", 5.0}, {"eta", 0.0}},
                                     {{"double_exponential", known_fit("double exponential (90)",
                                                                       {{"k_tau_R1", {0.2, 0.01}}, {"k_tau_R2", {2.0, 0.1}}},
-                                                                      0.99)}},
+                                                                      folded ? 0.52 : 0.99)}},
                                     rel));
     }
     write_fits(tmp.path, "ch4_2d_tumble", members);
@@ -423,5 +427,12 @@ TEST_CASE("Thesis claims: a tumbling member whose theta stop never came is not c
     INFO(r2.measured);
     CHECK(r2.verdict == Verdict::cannot_tell);
     CHECK(r2.measured.find("ran to its cap") != std::string::npos);
+  }
+  SECTION("a folded capsule's poor fit differs, and the claim says D_xy jumped") {
+    const auto claims = judge(18.0, true);
+    const auto& r2 = find_claim(claims, "4.1.2", "R^2 > 0.97");
+    INFO(r2.measured);
+    CHECK(r2.verdict == Verdict::differs);
+    CHECK(r2.measured.find("Ca0.6 R^2 0.52 (D_xy -0.07 at the stop jumps by 0.67") != std::string::npos);
   }
 }
