@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iomanip>
 #include <map>
+#include <set>
 
 #include "study/expansion.hpp"
 #include "study/member_state.hpp"
@@ -13,6 +14,7 @@
 #include "solver/scene/memory_estimate.hpp"
 #include "study/concurrency.hpp"
 #include "study/duration_text.hpp"
+#include "study/stray_folders.hpp"
 
 namespace capsule::study {
 
@@ -58,9 +60,11 @@ void print_plan(const Campaign& plan_campaign, const ResultsLayout& layout, std:
   MeasuredSpeed speed;
   std::size_t pending_count = 0;
   bool any_3d = false;
+  std::set<std::string> strays = member_folder_names(layout);  // emptied of the members' folders below
   for_each_member(
       plan_campaign,
       [&](Member&& m) {
+        strays.erase(m.dir_name());
         const MemberCondition condition = inspect_member(layout.member(m), m.id);
         add_measurement(speed, m, layout.member(m));
         if (condition.state != MemberState::complete) {
@@ -142,6 +146,7 @@ void print_plan(const Campaign& plan_campaign, const ResultsLayout& layout, std:
       << " new, " << counts[MemberState::running] << " running, " << counts[MemberState::interrupted]
       << " interrupted, " << counts[MemberState::failed] << " failed, " << counts[MemberState::unstable]
       << " unstable, " << counts[MemberState::stopped] << " stopped\n";
+  out << describe_stray_folders(strays);
   out << "cost of what is not complete: " << format_number(total_node_kt) << " node-kt";
   if (total_node_steps > 0) out << ", " << format_number(total_node_steps) << " node-steps";
   out << "\n";

@@ -43,6 +43,19 @@ TEST_CASE("study plan prints every member and changes nothing", "[study]") {
   CHECK(plan.output.find("2 members: 0 complete, 2 new") != std::string::npos);
   CHECK_FALSE(fs::exists(dir / "results"));
 
+  // A folder that no member names (left by a run before the Ca grid changed) is named, once;
+  // the folders of today's members are not.
+  const std::string member_folder = plan.output.substr(plan.output.find("Ca0.01-"), std::string("Ca0.01-").size() + 16);
+  fs::create_directories(dir / "results" / "plan" / "members" / "Ca0.005-0123456789abcdef");
+  fs::create_directories(dir / "results" / "plan" / "members" / member_folder);
+  const auto stale = testing::run_study({"plan", "c.json"}, dir);
+  INFO(stale.output);
+  CHECK(stale.exit_code == 0);
+  CHECK(stale.output.find("1 folder under members/ belongs to no member of this campaign") != std::string::npos);
+  CHECK(stale.output.find("\n  Ca0.005-0123456789abcdef\n") != std::string::npos);
+  CHECK(stale.output.find("\n  " + member_folder + "\n") == std::string::npos);
+  fs::remove_all(dir / "results");
+
   testing::write_text(dir / "bad.json", R"({"name": "x", "base": {}, "extra": 1})");
   const auto bad = testing::run_study({"plan", "bad.json"}, dir);
   CHECK(bad.exit_code == 2);
