@@ -22,6 +22,7 @@
 #include "study/capsule_binary.hpp"
 #include "study/concurrency.hpp"
 #include "study/exit_status.hpp"
+#include "study/finished_elsewhere.hpp"
 #include "study/joblog.hpp"
 #include "study/member_filter.hpp"
 #include "study/member_wrapper.hpp"
@@ -159,8 +160,21 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
     if (!selected(survey.members[i])) continue;
     if (!needs_run(survey.conditions[i], request.rerun_unstable, request.rerun_stopped)) continue;
     to_run.push_back(i);
-    any_3d = any_3d || survey.members[i].scene.at("dim").get<int>() == 3;
   }
+  // A member another campaign under the same results folder finished is copied, not run again.
+  std::size_t copied_count = 0;
+  if (request.reuse_finished) {
+    std::vector<std::size_t> candidates;
+    for (std::size_t i : to_run)
+      if (const MemberState st = survey.conditions[i].state; st != MemberState::unstable && st != MemberState::stopped)
+        candidates.push_back(i);
+    const auto copied = copy_members_finished_elsewhere(survey.members, candidates, survey.layout, out);
+    copied_count = copied.size();
+    to_run.erase(std::remove_if(to_run.begin(), to_run.end(),
+                                [&](std::size_t i) { return std::find(copied.begin(), copied.end(), i) != copied.end(); }),
+                 to_run.end());
+  }
+  for (std::size_t i : to_run) any_3d = any_3d || survey.members[i].scene.at("dim").get<int>() == 3;
 
   // A run.json without "finished" is the record of a run that was killed: keep it.
   if (fs::exists(survey.layout.run_json())) {
@@ -176,6 +190,7 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
   record["capsule_binary"] = capsule_binary.string();
   record["members"] = survey.members.size();
   record["to_run"] = to_run.size();
+  record["copied_from_other_campaigns"] = copied_count;
 
   RunOutcome outcome;
   if (!to_run.empty()) {

@@ -22,6 +22,7 @@ struct RunRequest {
   std::string ssh_command;       // GNU Parallel --ssh (default: ssh)
   bool rerun_unstable = false;   // also rerun members whose file says unstable
   bool rerun_stopped = false;    // also rerun members whose file says stopped (a configuration the solver refused)
+  bool reuse_finished = true;    // copy a member another campaign under results_dir finished (finished_elsewhere.hpp)
   bool progress_bar = false;     // redraw the campaign's progress line in place (the app sets it on a terminal)
   std::vector<std::string> cases;  // run only the members of these cases (empty: every member)
   std::vector<std::string> where;  // run only the members whose scene has KEY=VALUE (member_filter.hpp)

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iomanip>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "study/expansion.hpp"
@@ -14,6 +15,7 @@
 #include "solver/scene/memory_estimate.hpp"
 #include "study/concurrency.hpp"
 #include "study/duration_text.hpp"
+#include "study/finished_elsewhere.hpp"
 #include "study/stray_folders.hpp"
 
 namespace capsule::study {
@@ -61,13 +63,20 @@ void print_plan(const Campaign& plan_campaign, const ResultsLayout& layout, std:
   std::size_t pending_count = 0;
   bool any_3d = false;
   std::set<std::string> strays = member_folder_names(layout);  // emptied of the members' folders below
+  const FinishedElsewhere elsewhere(layout.root.parent_path(), layout.root);
+  // A member another campaign finished costs nothing: `study run` copies it (finished_elsewhere.hpp).
+  const auto copyable = [&](const Member& m, const MemberCondition& c) -> std::optional<FinishedMember> {
+    if (c.state != MemberState::fresh && c.state != MemberState::interrupted && c.state != MemberState::failed)
+      return std::nullopt;
+    return elsewhere.find(m);
+  };
   for_each_member(
       plan_campaign,
       [&](Member&& m) {
         strays.erase(m.dir_name());
         const MemberCondition condition = inspect_member(layout.member(m), m.id);
         add_measurement(speed, m, layout.member(m));
-        if (condition.state != MemberState::complete) {
+        if (condition.state != MemberState::complete && !copyable(m, condition)) {
           ++pending_count;
           any_3d = any_3d || m.scene.at("dim").get<int>() == 3;
         }
@@ -90,7 +99,7 @@ void print_plan(const Campaign& plan_campaign, const ResultsLayout& layout, std:
   double total_node_steps = 0;
   double total_node_kt = 0;
   double peak_memory = 0, longest = 0;
-  std::size_t members = 0;
+  std::size_t members = 0, copies = 0;
   std::map<MemberState, std::size_t> counts;
   // Pass 2: one row per member, printed as it is expanded.
   for_each_member(
@@ -101,7 +110,9 @@ void print_plan(const Campaign& plan_campaign, const ResultsLayout& layout, std:
         ++counts[condition.state];
         const int dim = m.scene.at("dim").get<int>();
         const CostEstimate c = estimate_cost(m.scene);
-        const bool pending = condition.state != MemberState::complete;
+        const std::optional<FinishedMember> copy_from = copyable(m, condition);
+        if (copy_from) ++copies;
+        const bool pending = condition.state != MemberState::complete && !copy_from;
         const std::string node_steps = format_number(c.node_steps());
         if (pending) total_node_steps += c.node_steps();
         if (pending) total_node_kt += static_cast<double>(c.nodes) * c.kt_span;
@@ -120,7 +131,8 @@ void print_plan(const Campaign& plan_campaign, const ResultsLayout& layout, std:
           campaign.member_seconds += estimate;
           longest = std::max(longest, estimate);
         }
-        if (!pending && std::isfinite(measured.wall_seconds)) seconds = format_number(measured.wall_seconds);
+        if (copy_from) seconds = "copy";
+        else if (!pending && std::isfinite(measured.wall_seconds)) seconds = format_number(measured.wall_seconds);
         else {
           seconds = "~";  // append(): GCC 12 -O3 reports a false -Wrestrict on "literal" + string
           seconds.append(format_number(estimated_member_seconds(c, dim, pending ? campaign.threads : 1, speed)));
@@ -134,7 +146,8 @@ void print_plan(const Campaign& plan_campaign, const ResultsLayout& layout, std:
         if (!m.case_name.empty() || !params.empty())
           out << " (" << (m.case_name.empty() ? "" : "case " + m.case_name + (params.empty() ? "" : "; ")) << params
               << ")";
-        if (!condition.reason.empty()) out << "  -- " << condition.reason;
+        if (copy_from) out << "  -- finished in " << copy_from->campaign << ": `study run` copies it";
+        else if (!condition.reason.empty()) out << "  -- " << condition.reason;
         out << "\n";
       },
       [&](std::size_t index, const std::string& case_name) {
@@ -146,6 +159,10 @@ void print_plan(const Campaign& plan_campaign, const ResultsLayout& layout, std:
       << " new, " << counts[MemberState::running] << " running, " << counts[MemberState::interrupted]
       << " interrupted, " << counts[MemberState::failed] << " failed, " << counts[MemberState::unstable]
       << " unstable, " << counts[MemberState::stopped] << " stopped\n";
+  if (copies > 0)
+    out << copies << " of them finished in other campaigns under " << layout.root.parent_path().string()
+        << " (same scene and physics version): `study run` copies " << (copies > 1 ? "them" : "it")
+        << " instead of running (--no-reuse runs " << (copies > 1 ? "them" : "it") << ")\n";
   out << describe_stray_folders(strays);
   out << "cost of what is not complete: " << format_number(total_node_kt) << " node-kt";
   if (total_node_steps > 0) out << ", " << format_number(total_node_steps) << " node-steps";

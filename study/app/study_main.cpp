@@ -54,6 +54,9 @@ int main_body(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   run->add_option("--ssh", run_request.ssh_command, "ssh command for --hosts (GNU Parallel --ssh)");
   run->add_flag("--rerun-unstable", run_request.rerun_unstable, "also rerun members that ended unstable");
+  run->add_flag("--no-reuse{false}", run_request.reuse_finished,
+                "run every member here, even one that another campaign under the results folder finished "
+                "(default: copy that member's files)");
   run->add_flag("--rerun-stopped", run_request.rerun_stopped,
                 "also rerun members that stopped (the solver refused their configuration)");
   run->add_option("--case", run_request.cases,
