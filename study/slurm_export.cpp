@@ -1,8 +1,10 @@
 #include "study/slurm_export.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 #include "study/capsule_binary.hpp"
+#include "study/finished_elsewhere.hpp"
 #include "study/script_path.hpp"
 #include "study/member_wrapper.hpp"
 #include "study/shell_quote.hpp"
@@ -45,10 +47,24 @@ SlurmExport export_slurm(const CampaignSurvey& survey, const SlurmOptions& optio
   SlurmExport result;
   result.job_list = slurm_dir / "jobs";
   result.script = slurm_dir / "capsule.sbatch";
+  prepare_member_directories(survey);
+  // A member another campaign under the same results folder finished is copied, not exported.
+  std::vector<std::size_t> copied;
+  if (options.reuse_finished) {
+    std::vector<std::size_t> candidates;
+    for (std::size_t i = 0; i < survey.members.size(); ++i)
+      if (const MemberState st = survey.conditions[i].state;
+          needs_run(survey.conditions[i], false, false) && st != MemberState::unstable && st != MemberState::stopped)
+        candidates.push_back(i);
+    std::ostringstream lines;
+    copied = copy_members_finished_elsewhere(survey.members, candidates, survey.layout, lines);
+    result.copied = lines.str();
+  }
   std::string list;
   std::vector<const Member*> pending_members;
   for (std::size_t i = 0; i < survey.members.size(); ++i) {
     list += survey.layout.member(survey.members[i]).dir.string() + "\n";
+    if (std::find(copied.begin(), copied.end(), i) != copied.end()) continue;
     if (needs_run(survey.conditions[i], options.rerun_unstable, options.rerun_stopped)) {
       result.pending.push_back(i);
       pending_members.push_back(&survey.members[i]);
@@ -56,7 +72,6 @@ SlurmExport export_slurm(const CampaignSurvey& survey, const SlurmOptions& optio
   }
   result.resources = slurm_resources(pending_members, options.threads, options.time, options.mem);
 
-  prepare_member_directories(survey);
   fs::create_directories(slurm_dir);
   write_file_atomically(result.job_list, list);
   write_member_wrapper(survey.layout.wrapper(), capsule_binary, survey.campaign.name);

@@ -16,11 +16,13 @@ struct SlurmOptions {
   std::string time, mem;      // "" : from the cost estimate
   bool rerun_unstable = false;
   bool rerun_stopped = false;
+  bool reuse_finished = true;  // copy a member another campaign finished instead of exporting it (finished_elsewhere.hpp)
 };
 
 struct SlurmExport {
   std::filesystem::path job_list, script;
   std::vector<std::size_t> pending;  // member indices in the --array spec (none: no --array line)
+  std::string copied;                // "copied ... from ..." lines of the members finished elsewhere
   SlurmResources resources;
 };
 

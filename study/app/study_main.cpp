@@ -111,6 +111,9 @@ int main_body(int argc, char** argv) {
       ->check(slurm_form(is_slurm_mem, "megabytes, or a number with K, M, G or T"));
   exporter->add_flag("--rerun-unstable", slurm_options.rerun_unstable, "include members that ended unstable");
   exporter->add_flag("--rerun-stopped", slurm_options.rerun_stopped, "include members that stopped");
+  exporter->add_flag("--no-reuse{false}", slurm_options.reuse_finished,
+                     "export every member, even one that another campaign under the results folder finished "
+                     "(default: copy that member's files)");
   exporter->add_option("--results", results_dir, "results folder")->capture_default_str();
 
   if (const int code = capsule::cli::parse_or_exit_code(app, argc, argv); code >= 0) return code;
@@ -143,7 +146,7 @@ int main_body(int argc, char** argv) {
   if (*exporter) {
     const CampaignSurvey survey = survey_campaign(export_file, results_dir);
     const SlurmExport e = export_slurm(survey, slurm_options);
-    std::cout << "job list: " << e.job_list.string() << "\nscript:   " << e.script.string() << "\n"
+    std::cout << e.copied << "job list: " << e.job_list.string() << "\nscript:   " << e.script.string() << "\n"
               << e.pending.size() << " of " << survey.members.size() << " members to run";
     if (e.pending.empty())
       std::cout << ": nothing to submit\n";

@@ -51,6 +51,20 @@ TEST_CASE("study run copies a member another campaign finished instead of runnin
     CHECK_FALSE(fs::exists(copy.dir / "member.h5.copying"));
   }
 
+  SECTION("study export --slurm copies it and leaves it out of the array; --no-reuse exports it") {
+    const auto all = testing::run_study({"export", "second.json", "--slurm", "--no-reuse"}, dir);
+    INFO(all.output);
+    CHECK(all.exit_code == 0);
+    CHECK_THAT(all.output, !Catch::Contains("copied ") && Catch::Contains("2 of 2 members to run"));
+    const auto exported = testing::run_study({"export", "second.json", "--slurm"}, dir);
+    INFO(exported.output);
+    CHECK(exported.exit_code == 0);
+    CHECK_THAT(exported.output, Catch::Contains("copied " + member_with_ca(a, 0.02).dir_name() + " from first") &&
+                                    Catch::Contains("1 of 2 members to run"));
+    const CampaignSurvey b = survey_campaign((dir / "second.json").string(), dir / "results");
+    CHECK(b.count(MemberState::complete) == 1);
+  }
+
   SECTION("--no-reuse runs the member although another campaign finished it") {
     const auto run = testing::run_study({"run", "second.json", "-j", "1", "--no-reuse"}, dir);
     INFO(run.output);
