@@ -9,23 +9,6 @@ namespace capsule::study {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-MemberPaths paths_in(const fs::path& dir) {
-  MemberPaths p;
-  p.dir = dir;
-  p.scene = dir / "scene.json";
-  p.h5 = dir / "member.h5";
-  p.partial = dir / "member.h5.partial";
-  p.log = dir / "capsule.log";
-  p.exit_status = dir / "exit_status";
-  p.restart = dir / "member.h5.restart";
-  p.progress = dir / "member.h5.progress";
-  return p;
-}
-
-}  // namespace
-
 FinishedElsewhere::FinishedElsewhere(const fs::path& results_root, const fs::path& own_root) {
   std::error_code ec;
   if (!fs::is_directory(results_root, ec)) return;
@@ -53,7 +36,7 @@ std::optional<FinishedMember> FinishedElsewhere::find(const Member& m) const {
   const auto it = by_id_.find(m.id);
   if (it == by_id_.end()) return std::nullopt;
   for (const auto& candidate : it->second) {
-    const MemberPaths p = paths_in(candidate.dir);
+    const MemberPaths p = member_paths_in(candidate.dir);
     if (inspect_member(p, m.id).state != MemberState::complete) continue;
     // The id is a 64-bit hash: the scene itself must match as well.
     const nlohmann::json scene = nlohmann::json::parse(read_file_text(p.scene), nullptr, /*allow_exceptions=*/false);
@@ -64,7 +47,7 @@ std::optional<FinishedMember> FinishedElsewhere::find(const Member& m) const {
 }
 
 void copy_finished_member(const FinishedMember& source, const MemberPaths& target) {
-  const MemberPaths from = paths_in(source.dir);
+  const MemberPaths from = member_paths_in(source.dir);
   fs::create_directories(target.dir);
   const fs::path temporary = target.dir / "member.h5.copying";
   fs::copy_file(from.h5, temporary, fs::copy_options::overwrite_existing);

@@ -12,9 +12,9 @@ namespace fs = std::filesystem;
 ResultsLayout::ResultsLayout(const fs::path& results_dir, const std::string& campaign_name)
     : root(fs::absolute(results_dir).lexically_normal() / campaign_name) {}
 
-MemberPaths ResultsLayout::member(const Member& m) const {
+MemberPaths member_paths_in(const fs::path& dir) {
   MemberPaths p;
-  p.dir = members_dir() / m.dir_name();
+  p.dir = dir;
   p.scene = p.dir / "scene.json";
   p.h5 = p.dir / "member.h5";
   p.partial = p.dir / "member.h5.partial";
@@ -24,6 +24,8 @@ MemberPaths ResultsLayout::member(const Member& m) const {
   p.progress = p.dir / "member.h5.progress";
   return p;
 }
+
+MemberPaths ResultsLayout::member(const Member& m) const { return member_paths_in(members_dir() / m.dir_name()); }
 
 std::string read_file_text(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);

@@ -45,6 +45,9 @@ struct ResultsLayout {
   MemberPaths member(const Member& m) const;
 };
 
+// The files of the member folder dir (any campaign's).
+MemberPaths member_paths_in(const std::filesystem::path& dir);
+
 // Writes text to path atomically (temporary file in the same folder, then rename).
 void write_file_atomically(const std::filesystem::path& path, const std::string& text);
 // The whole file as text; "" when it does not exist or cannot be read.
