@@ -867,30 +867,34 @@ struct ShearMember {
   double D_at_1 = k_nan, D_stop = k_nan;
 };
 
+// A member's D_xy at kt 1 and at the stop (its last row without a t_stop); nullopt with `why`
+// set when the file or its kt / D_xy series is missing.
+std::optional<ShearMember> shear_member(const ThesisResults& res, const ThesisMember& m, std::string& why) {
+  ShearMember s;
+  s.member = &m;
+  s.data = res.member_data(m, why);
+  if (!s.data) return std::nullopt;
+  const auto kt_it = s.data->series.find("kt"), d_it = s.data->series.find("D_xy");
+  if (kt_it == s.data->series.end() || d_it == s.data->series.end()) {
+    why = m.slug + ": no kt / D_xy series";
+    return std::nullopt;
+  }
+  const auto& kt = kt_it->second;
+  const auto& D = d_it->second;
+  s.D_at_1 = interpolate_series(kt, D, 1.0);
+  const double t_stop = s.data->markers.count("t_stop") ? s.data->markers.at("t_stop") : k_nan;
+  s.D_stop = std::isfinite(t_stop) ? interpolate_series(kt, D, t_stop) : k_nan;
+  if (std::isnan(s.D_stop) && !D.empty() && !std::isfinite(t_stop)) s.D_stop = D.back();
+  return s;
+}
+
 std::vector<ShearMember> shear_members(const ThesisResults& res, const ThesisCampaign& c, const std::string& case_name,
                                        std::string& why) {
   std::vector<ShearMember> out;
   for (const ThesisMember* m : c.in_case(case_name)) {
-    ShearMember s;
-    s.member = m;
     std::string w;
-    s.data = res.member_data(*m, w);
-    if (!s.data) {
-      why += (why.empty() ? "" : "; ") + w;
-      continue;
-    }
-    const auto kt_it = s.data->series.find("kt"), d_it = s.data->series.find("D_xy");
-    if (kt_it == s.data->series.end() || d_it == s.data->series.end()) {
-      why += (why.empty() ? "" : "; ") + m->slug + ": no kt / D_xy series";
-      continue;
-    }
-    const auto& kt = kt_it->second;
-    const auto& D = d_it->second;
-    s.D_at_1 = interpolate_series(kt, D, 1.0);
-    const double t_stop = s.data->markers.count("t_stop") ? s.data->markers.at("t_stop") : k_nan;
-    s.D_stop = std::isfinite(t_stop) ? interpolate_series(kt, D, t_stop) : k_nan;
-    if (std::isnan(s.D_stop) && !D.empty() && !std::isfinite(t_stop)) s.D_stop = D.back();
-    out.push_back(std::move(s));
+    if (auto s = shear_member(res, *m, w)) out.push_back(std::move(*s));
+    else why += (why.empty() ? "" : "; ") + w;
   }
   return out;
 }
@@ -933,16 +937,9 @@ std::optional<ResolutionShift> resolution_shift(const ThesisResults& res, const 
       // the next coarser level: the smallest spacing above the fine member's
       if (best && ladder_spacing(spacing, l->second) >= ladder_spacing(spacing, best->coarse_level)) continue;
       std::string w;
-      const auto d = res.member_data(*m, w);
-      if (!d) continue;
-      const auto kt = d->series.find("kt"), D = d->series.find("D_xy");
-      if (kt == d->series.end() || D == d->series.end() || D->second.empty()) continue;
-      ShearMember coarse;
-      coarse.member = m;
-      coarse.D_at_1 = interpolate_series(kt->second, D->second, 1.0);
-      const double t_stop = d->markers.count("t_stop") ? d->markers.at("t_stop") : k_nan;
-      coarse.D_stop = std::isfinite(t_stop) ? interpolate_series(kt->second, D->second, t_stop) : D->second.back();
-      const double v = value(&coarse), v_fine = value(&fine);
+      const auto coarse = shear_member(res, *m, w);
+      if (!coarse) continue;
+      const double v = value(&*coarse), v_fine = value(&fine);
       best = ResolutionShift{key, l->second, f->second, v, (v_fine - v) / v_fine};
     }
   }
