@@ -934,8 +934,9 @@ std::optional<ResolutionShift> resolution_shift(const ThesisResults& res, const 
       if (!m->coarse || m->finer != fine.member->slug) continue;
       const auto l = m->parameters.find(key);
       if (l == m->parameters.end()) continue;
-      // the next coarser level: the smallest spacing above the fine member's
-      if (best && ladder_spacing(spacing, l->second) >= ladder_spacing(spacing, best->coarse_level)) continue;
+      // the next coarser level: the smallest spacing above the fine member's (levels of one key only)
+      if (best && (best->key != key || ladder_spacing(spacing, l->second) >= ladder_spacing(spacing, best->coarse_level)))
+        continue;
       std::string w;
       const auto coarse = shear_member(res, *m, w);
       if (!coarse) continue;
