@@ -1,5 +1,6 @@
 #include "analysis/report.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <set>
 #include <stdexcept>
@@ -50,6 +51,12 @@ ReportSummary write_report(const ReportRequest& request) {
     for (const auto& [name, value] : p.where) wanted.insert(name);
   for (const auto& l : block.ladders) wanted.insert(l.key);  // study thesis judges a ladder's finest level by it
   std::vector<MemberAnalysis> members = analyse_members(request, block, wanted);
+  std::vector<std::string> unreadable;
+  for (const auto& m : members)
+    if (m.status.rfind("unreadable", 0) == 0) {
+      const std::string entry = m.ref.slug + "-" + m.ref.id + ": " + m.status;
+      if (std::find(unreadable.begin(), unreadable.end(), entry) == unreadable.end()) unreadable.push_back(entry);
+    }
   record_varying_parameters(members);
   const ReportContext context{request, block, std::move(members)};
 
@@ -78,6 +85,7 @@ ReportSummary write_report(const ReportRequest& request) {
     draw_figures(out, outputs.figure_data, outputs, summary);
   }
   summary.files = std::move(outputs.files);
+  summary.unreadable = std::move(unreadable);
   return summary;
 }
 

@@ -27,6 +27,7 @@ struct ReportSummary {
   std::vector<std::string> files;  // every file written
   bool figures_skipped = false;
   std::string figures_note;
+  std::vector<std::string> unreadable;  // "<member slug>: reason" for each member file that could not be read
 };
 
 // Throws std::invalid_argument for a bad analysis block; a member that is missing,

@@ -32,6 +32,8 @@ MemberAnalysis analyse_member(const MemberRef& ref, const AnalysisBlock& block, 
   } else {
     try {
       data.emplace(io::read_member(ref.path));
+      if (data->complete())
+        if (const std::string wrong = io::missing_series(*data); !wrong.empty()) throw std::runtime_error(wrong);
       m.status = data->status;
       m.fits = fit_member(*data, block.fits);
       if (const auto it = data->series.find("kt"); it != data->series.end()) m.kt = it->second;

@@ -11,8 +11,15 @@
 
 namespace capsule::study {
 
-// Writes results/<campaign>/report via analysis::write_report; returns the exit status.
-int report_campaign(const CampaignSurvey& survey, std::ostream& out);
+struct ReportOptions {
+  bool partial = false;  // write the report even when some member files cannot be read (PARTIAL.md names them)
+};
+
+// Writes results/<campaign>/report via analysis::write_report, into a staging folder that is
+// swapped in when complete; returns the exit status. When a member file cannot be read (locked,
+// damaged, a checksum or content hash that does not match) the previous report is kept and it
+// returns 3, unless options.partial.
+int report_campaign(const CampaignSurvey& survey, const ReportOptions& options, std::ostream& out);
 
 // Compares the reports of several campaigns; returns analysis::compare_campaigns' status.
 int compare_campaign_files(const std::vector<std::string>& campaign_files, bool against_table2,

@@ -48,7 +48,7 @@ std::string read_safe_name(const json& object, const std::string& source, const 
                          "a name of " + std::to_string(name.size()) + " characters is too long",
                          "at most " + std::to_string(max_name_length) + " characters");
   if (!is_safe_name(name))
-    throw campaign_error(source, key_path(path, "name"), "\"" + name + "\" is not a safe name",
+    throw campaign_error(source, key_path(path, "name"), message_value(name) + " is not a safe name",
                          "letters, digits, '_', '-', '.', not starting with '.', at most " +
                              std::to_string(max_name_length) + " characters");
   return name;
@@ -102,7 +102,7 @@ Sweep read_sweep(const json& j, const std::string& source, const std::string& pa
   for (const auto* axes : {&sweep.grid, &sweep.zip})
     for (const auto& axis : *axes)
       if (!seen.insert(axis.key).second)
-        throw campaign_error(source, path, "\"" + axis.key + "\" is swept twice", "each key in one list only");
+        throw campaign_error(source, path, message_value(axis.key) + " is swept twice", "each key in one list only");
   return sweep;
 }
 

@@ -15,9 +15,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include <functional>
+#include <map>
 #include <thread>
 #include <vector>
 
+#include "build_info.hpp"
 #include "study/campaign_progress.hpp"
 #include "study/capsule_binary.hpp"
 #include "study/concurrency.hpp"
@@ -26,6 +28,7 @@
 #include "study/joblog.hpp"
 #include "study/member_filter.hpp"
 #include "study/member_wrapper.hpp"
+#include "study/provenance.hpp"
 #include "study/run_lock.hpp"
 #include "study/run_record.hpp"
 #include "study/script_path.hpp"
@@ -92,8 +95,7 @@ int run_and_wait(const std::vector<std::string>& argv, const std::function<void(
 void print_status(const CampaignSurvey& survey, std::ostream& out) {
   out << "campaign " << survey.campaign.name << ": " << survey.members.size() << " members in "
       << survey.layout.root.string() << "\n";
-  for (auto state : {MemberState::complete, MemberState::fresh, MemberState::running, MemberState::interrupted,
-                     MemberState::unstable, MemberState::stopped, MemberState::failed})
+  for (auto state : kAllMemberStates)
     out << "  " << state_name(state) << ": " << survey.count(state) << "\n";
   for (std::size_t i = 0; i < survey.members.size(); ++i) {
     const auto& c = survey.conditions[i];
@@ -102,6 +104,8 @@ void print_status(const CampaignSurvey& survey, std::ostream& out) {
   }
   if (survey.count(MemberState::interrupted) + survey.count(MemberState::fresh) + survey.count(MemberState::failed) > 0)
     out << "  (`study run` again runs what is not complete; complete members are kept)\n";
+  if (survey.count(MemberState::unreadable) > 0)
+    out << "  (an unreadable member file is never deleted or run over: free it, or move it aside to run the member again)\n";
   if (survey.count(MemberState::unstable) + survey.count(MemberState::stopped) > 0)
     out << "  (unstable and stopped members are kept: `study run --rerun-unstable` / `--rerun-stopped` runs them again)\n";
 }
@@ -134,16 +138,17 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
       throw campaign_error(request.campaign_file, "--where", "\"" + text + "\" matches no member of this campaign",
                            "a dotted key of the canonical scene (capsule check) and a value some member has");
   }
+  // Refused before anything is written: a dirty build's members could not be reproduced.
+  if (std::any_of(survey.conditions.begin(), survey.conditions.end(), [&](const MemberCondition& c) {
+        return needs_run(c, request.rerun_unstable, request.rerun_stopped);
+      }))
+    require_committed_build(build::code_version, request.allow_dirty, "study run");
   const fs::path capsule_binary = find_capsule_binary();
   // The job list has one member directory per line; the wrapper names the capsule binary.
   require_script_safe("the results folder", survey.layout.root);
   require_script_safe("the capsule binary's path", capsule_binary);
   fs::create_directories(survey.layout.root);
-  std::vector<std::string> running;  // under a held lock, the members with only a .partial run
-  for (std::size_t i = 0; i < survey.members.size(); ++i)
-    if (const MemberState st = survey.conditions[i].state; st == MemberState::running || st == MemberState::interrupted)
-      running.push_back(survey.members[i].dir_name());
-  RunLock lock(survey.layout.lock_file(), survey.layout.running_info(), running);
+  RunLock lock(survey.layout.lock_file(), survey.layout.running_info(), members_in_progress(survey));
   prepare_member_directories(survey);
 
   const auto selected = [&](const Member& m) {
@@ -191,6 +196,7 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
   record["members"] = survey.members.size();
   record["to_run"] = to_run.size();
   record["copied_from_other_campaigns"] = copied_count;
+  if (request.allow_dirty && is_uncommitted_version(build::code_version)) record["allow_dirty"] = true;
 
   RunOutcome outcome;
   if (!to_run.empty()) {
@@ -210,8 +216,11 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
     write_member_wrapper(survey.layout.wrapper(), capsule_binary, survey.campaign.name);
     write_file_atomically(survey.layout.run_json(), record.dump(2) + "\n");
 
-    // No --halt: a failed member never stops the others. -q quotes the command words
-    // (wrapper path, member dir, threads), so no user string reaches a shell unquoted.
+    // No --halt: a failed member never stops the others. The command template holds no user
+    // string: GNU Parallel reads replacement strings ({}, {/}, {= perl =}) in the template, so
+    // the wrapper is named relative to the member folder that {} stands for
+    // (<root>/members/<member>/../../run_member.sh) and every path arrives only as data from
+    // the job list. -q quotes the words, so nothing reaches a shell unquoted either.
     // "+joblog" appends: the joblog keeps every run's rows.
     std::string joblog = "+";  // append(): GCC 12 -O3 reports a false -Wrestrict on "literal" + string
     joblog.append(survey.layout.joblog().string());
@@ -221,7 +230,8 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
       if (!request.ssh_command.empty()) argv.insert(argv.end(), {"--ssh", request.ssh_command});
     }
     argv.insert(argv.end(), {"--arg-file", survey.layout.jobs_file().string(), "-q",
-                             survey.layout.wrapper().string(), "{}", std::to_string(conc.threads)});
+                             "{}/../../" + survey.layout.wrapper().filename().string(), "{}",
+                             std::to_string(conc.threads)});
 
     out << "running " << to_run.size() << " of " << survey.members.size() << " members (" << conc.jobs
         << " at once" << (request.hosts_file.empty() ? "" : " per host") << " x " << conc.threads << " thread"
@@ -235,11 +245,38 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
     progress.finish();
     outcome.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     outcome.ran = to_run.size();
-    for (const auto& e : read_joblog(survey.layout.joblog()))
-      if (e.start >= start_epoch - 1.0) outcome.member_seconds += e.runtime;  // this run's rows only
+    // A row with exit value 255 is a member GNU Parallel could not hand to its host (ssh's
+    // own failure: the wrapper passes on the capsule's status, which is never 255).
+    std::map<std::string, std::vector<std::string>> refused;  // host -> members it was given
+    for (const auto& e : read_joblog(survey.layout.joblog())) {
+      if (e.start < start_epoch - 1.0) continue;  // this run's rows only
+      outcome.member_seconds += e.runtime;
+      if (e.exit_value == 255 && e.seq >= 1 && static_cast<std::size_t>(e.seq) <= to_run.size())
+        refused[e.host].push_back(survey.members[to_run[e.seq - 1]].dir_name());
+    }
     record["parallel_exit_status"] = parallel_status;
+    // 1-100: that many jobs failed, 101: more; the members' own files tell which. 255 (or any
+    // other status) is GNU Parallel's own failure: a bad option or hosts file, no such program.
+    if (parallel_status > 101) {
+      out << "study: GNU Parallel itself failed (exit status " << parallel_status
+          << "; its message is above): members it did not start are still new\n";
+      outcome.tool_failed = true;
+      record["parallel_failed"] = true;
+    }
+    for (const auto& [host, members] : refused) {
+      out << "study: host " << host << " could not be reached (exit 255) for " << members.size() << " member"
+          << (members.size() == 1 ? "" : "s") << ":";
+      for (const auto& m : members) out << " " << m;
+      out << "\n";
+      record["unreachable_hosts"][host] = members;
+      outcome.tool_failed = true;
+    }
   } else {
-    out << "nothing to run: every member is finished\n";
+    // Finished, or kept as they are (running elsewhere, unreadable, unstable, stopped): the
+    // summary below says which.
+    out << "nothing to run"
+        << (request.cases.empty() && request.where.empty() ? "" : " among the members --case / --where select")
+        << ": no member needs running (the states are below)\n";
   }
 
   // The verdict comes from the members' own files.
@@ -250,14 +287,13 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
     out << "wall " << outcome.wall_seconds << " s for " << outcome.member_seconds
         << " s of member run time (concurrency " << (outcome.wall_seconds > 0 ? outcome.member_seconds / outcome.wall_seconds : 0)
         << ")\n";
-  outcome.exit_code = members_exit_code(survey);
+  outcome.exit_code = outcome.tool_failed ? exit_failure : members_exit_code(survey);
 
   record["finished"] = utc_now_iso8601();
   record["wall_seconds"] = outcome.wall_seconds;
   record["member_seconds"] = outcome.member_seconds;
   nlohmann::json counts;
-  for (auto state : {MemberState::complete, MemberState::fresh, MemberState::running, MemberState::interrupted,
-                     MemberState::unstable, MemberState::stopped, MemberState::failed})
+  for (auto state : kAllMemberStates)
     counts[state_name(state)] = survey.count(state);
   record["counts"] = counts;
   record["exit_status"] = outcome.exit_code;

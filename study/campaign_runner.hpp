@@ -2,7 +2,7 @@
 // `study run`: prepares member directories, hands every member that is not complete to
 // GNU Parallel (one job per member directory, from a generated job file), waits, and
 // summarises from the members' own files. Resumable: rerun it after an interruption and
-// only incomplete members run again, each from its last restart point (README "Checkpoints").
+// only incomplete members run again, each from its last restart point (docs/guide/running.md "Checkpoints").
 // While they run, one line shows done / running / left and an ETA (campaign_progress.hpp).
 #include <filesystem>
 #include <ostream>
@@ -20,6 +20,7 @@ struct RunRequest {
   int threads = 0;               // 0: chosen
   std::string hosts_file;        // GNU Parallel --sshloginfile (shared filesystem assumed)
   std::string ssh_command;       // GNU Parallel --ssh (default: ssh)
+  bool allow_dirty = false;      // run from a build whose sources differ from every commit (provenance.hpp)
   bool rerun_unstable = false;   // also rerun members whose file says unstable
   bool rerun_stopped = false;    // also rerun members whose file says stopped (a configuration the solver refused)
   bool reuse_finished = true;    // copy a member another campaign under results_dir finished (finished_elsewhere.hpp)
@@ -33,6 +34,7 @@ struct RunOutcome {
   std::size_t ran = 0;          // members handed to GNU Parallel
   double wall_seconds = 0;      // GNU Parallel's wall time
   double member_seconds = 0;    // sum of the joblog's JobRuntime over the members run
+  bool tool_failed = false;     // GNU Parallel failed itself, or a host could not be reached: exit 1
 };
 
 RunOutcome run_campaign(const RunRequest& request, std::ostream& out);

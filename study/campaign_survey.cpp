@@ -26,6 +26,14 @@ CampaignSurvey survey_campaign(const std::string& campaign_file, const fs::path&
   return CampaignSurvey{std::move(campaign), std::move(members), std::move(layout), std::move(conditions)};
 }
 
+std::vector<std::string> members_in_progress(const CampaignSurvey& survey) {
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < survey.members.size(); ++i)
+    if (const MemberState st = survey.conditions[i].state; st == MemberState::running || st == MemberState::interrupted)
+      names.push_back(survey.members[i].dir_name());
+  return names;
+}
+
 void prepare_member_directories(const CampaignSurvey& survey) {
   fs::create_directories(survey.layout.members_dir());
   record_campaign(survey.campaign, survey.layout);

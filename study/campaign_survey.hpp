@@ -23,6 +23,10 @@ struct CampaignSurvey {
 
 CampaignSurvey survey_campaign(const std::string& campaign_file, const std::filesystem::path& results_dir);
 
+// The folder names of the members that have a run in progress or an interrupted one (a
+// .partial or restart point and no member file): under a held run lock, the running ones.
+std::vector<std::string> members_in_progress(const CampaignSurvey& survey);
+
 // Creates every member directory and writes its scene.json (when missing or different),
 // and records the campaign file as run (campaign.json).
 void prepare_member_directories(const CampaignSurvey& survey);

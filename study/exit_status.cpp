@@ -3,7 +3,9 @@
 namespace capsule::study {
 
 int members_exit_code(const CampaignSurvey& survey) {
-  if (survey.count(MemberState::failed) + survey.count(MemberState::unstable) + survey.count(MemberState::stopped) > 0)
+  if (survey.count(MemberState::failed) + survey.count(MemberState::unstable) + survey.count(MemberState::stopped) +
+          survey.count(MemberState::unreadable) >
+      0)
     return exit_members_failed;
   if (survey.count(MemberState::complete) < survey.members.size()) return exit_members_missing;
   return exit_ok;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
+#include "solver/io/member_file.hpp"
 #include "study/member_state.hpp"
 
 namespace capsule::study {
@@ -32,7 +33,15 @@ FinishedElsewhere::FinishedElsewhere(const fs::path& results_root, const fs::pat
   }
 }
 
-std::optional<FinishedMember> FinishedElsewhere::find(const Member& m) const {
+std::string reuse_refusal(const fs::path& h5) {
+  try {
+    return io::missing_series(io::read_member(h5.string()));  // read_member checks checksums and content hash
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+}
+
+std::optional<FinishedMember> FinishedElsewhere::find(const Member& m, std::ostream* notes) const {
   const auto it = by_id_.find(m.id);
   if (it == by_id_.end()) return std::nullopt;
   for (const auto& candidate : it->second) {
@@ -41,6 +50,11 @@ std::optional<FinishedMember> FinishedElsewhere::find(const Member& m) const {
     // The id is a 64-bit hash: the scene itself must match as well.
     const nlohmann::json scene = nlohmann::json::parse(read_file_text(p.scene), nullptr, /*allow_exceptions=*/false);
     if (scene.is_discarded() || scene != m.scene) continue;
+    if (const std::string why = reuse_refusal(p.h5); !why.empty()) {
+      if (notes) *notes << "not copied from " << candidate.campaign << "/members/" << candidate.dir.filename().string()
+                        << ": " << why << "\n";
+      continue;
+    }
     return candidate;
   }
   return std::nullopt;
@@ -51,6 +65,11 @@ void copy_finished_member(const FinishedMember& source, const MemberPaths& targe
   fs::create_directories(target.dir);
   const fs::path temporary = target.dir / "member.h5.copying";
   fs::copy_file(from.h5, temporary, fs::copy_options::overwrite_existing);
+  if (const std::string why = reuse_refusal(temporary); !why.empty()) {
+    std::error_code ec;
+    fs::remove(temporary, ec);
+    throw std::runtime_error("the copy of " + from.h5.string() + " does not read whole: " + why);
+  }
   fs::rename(temporary, target.h5);
   std::string log = read_file_text(from.log);
   if (!log.empty() && log.back() != '\n') log += "\n";
@@ -68,9 +87,14 @@ std::vector<std::size_t> copy_members_finished_elsewhere(const std::vector<Membe
   if (candidates.empty()) return copied;
   const FinishedElsewhere elsewhere(layout.root.parent_path(), layout.root);
   for (std::size_t i : candidates) {
-    const auto source = elsewhere.find(members[i]);
+    const auto source = elsewhere.find(members[i], &out);
     if (!source) continue;
-    copy_finished_member(*source, layout.member(members[i]));
+    try {
+      copy_finished_member(*source, layout.member(members[i]));
+    } catch (const std::runtime_error& e) {
+      out << "not copied: " << e.what() << "\n";
+      continue;
+    }
     out << "copied " << members[i].dir_name() << " from " << source->campaign
         << " (finished there; same scene and physics version)\n";
     copied.push_back(i);

@@ -1,5 +1,7 @@
 #include "study/json_path.hpp"
 
+#include "solver/scene/json_text.hpp"
+
 #include <stdexcept>
 
 namespace capsule::study {
@@ -17,7 +19,7 @@ std::vector<std::string> split_dotted_path(const std::string& dotted) {
   }
   parts.push_back(current);
   for (const auto& p : parts)
-    if (p.empty()) throw std::invalid_argument("\"" + dotted + "\" is not a key path (expected e.g. \"Ca\" or \"resolution.a\")");
+    if (p.empty()) throw std::invalid_argument(message_value(dotted) + " is not a key path (expected e.g. \"Ca\" or \"resolution.a\")");
   return parts;
 }
 
@@ -36,7 +38,7 @@ void set_at_dotted_path(nlohmann::json& target, const std::string& dotted, const
   for (const auto& part : parts) {
     if (node->is_null()) *node = nlohmann::json::object();
     if (!node->is_object())
-      throw std::invalid_argument("\"" + dotted + "\": \"" + walked + "\" is a " + node->type_name() +
+      throw std::invalid_argument(message_value(dotted) + ": " + message_value(walked) + " is a " + node->type_name() +
                                   ", not an object");
     walked += (walked.empty() ? "" : ".") + part;
     node = &(*node)[part];

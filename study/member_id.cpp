@@ -2,15 +2,14 @@
 
 #include <cstdio>
 
+#include "solver/io/content_hash.hpp"
+
 namespace capsule::study {
 
 std::uint64_t fnv1a_64(std::string_view bytes) {
-  std::uint64_t hash = 14695981039346656037ull;  // FNV-1a 64-bit offset basis
-  for (unsigned char c : bytes) {
-    hash ^= c;
-    hash *= 1099511628211ull;  // FNV-1a 64-bit prime
-  }
-  return hash;
+  io::Fnv1a64 hash;
+  hash.add(bytes);
+  return hash.value();
 }
 
 std::string member_hash_text(const nlohmann::json& canonical_scene, const std::string& physics_version) {

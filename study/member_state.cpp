@@ -80,18 +80,29 @@ const char* state_name(MemberState state) {
     case MemberState::unstable: return "unstable";
     case MemberState::stopped: return "stopped";
     case MemberState::failed: return "failed";
+    case MemberState::unreadable: return "unreadable";
   }
   return "?";
 }
 
 MemberCondition inspect_member(const MemberPaths& paths, const std::string& expected_id) {
   std::error_code ec;
+  // A folder that cannot be looked into (no permission, a file where a folder should be) is not
+  // a member that never ran: say so, and never run over it.
+  const fs::file_status dir = fs::status(paths.dir, ec);
+  if (ec && ec != std::errc::no_such_file_or_directory)
+    return {MemberState::unreadable, "cannot look into the member folder " + paths.dir.string() + ": " + ec.message()};
+  if (!ec && dir.type() != fs::file_type::directory)
+    return {MemberState::unreadable, paths.dir.string() + " is not a folder"};
+  if (fs::symlink_status(paths.h5, ec).type() == fs::file_type::none || (ec && ec != std::errc::no_such_file_or_directory))
+    return {MemberState::unreadable, "cannot look at " + paths.h5.string() + ": " + ec.message()};
   if (fs::exists(paths.h5, ec)) {
     io::MemberStatus s;
     try {
       s = io::read_member_status(paths.h5.string());
     } catch (const std::exception& e) {
-      return {MemberState::failed, std::string("unreadable member file: ") + e.what()};
+      return {MemberState::unreadable, std::string("member file cannot be read, left as it is (move it aside to "
+                                                   "run the member again): ") + e.what()};
     }
     if (s.member_id != expected_id)
       return {MemberState::failed, "member file belongs to member \"" + s.member_id + "\", not " + expected_id};
@@ -180,6 +191,7 @@ bool needs_run(const MemberCondition& condition, bool rerun_unstable, bool rerun
   switch (condition.state) {
     case MemberState::complete: return false;
     case MemberState::running: return false;  // a live capsule (another run, a Slurm task) owns it
+    case MemberState::unreadable: return false;  // never run over a file that may be complete
     case MemberState::unstable: return rerun_unstable;
     case MemberState::stopped: return rerun_stopped;
     default: return true;

@@ -16,8 +16,14 @@ enum class MemberState {
   complete,     // member.h5 with status "complete" and this member's id
   unstable,     // member.h5 with status "unstable at kt = X: reason"
   stopped,      // member.h5 with status "stopped: reason" (the solver threw; capsule exit 1)
-  failed,       // the capsule exited non-zero without a member file, or the file is unreadable / foreign
+  failed,       // the capsule exited non-zero without a member file, or the file is foreign (another id)
+  unreadable,   // member.h5 exists but cannot be read (locked, no permission, damaged): kept, never rerun over
 };
+
+// Every state, in the order the summaries list them.
+inline constexpr MemberState kAllMemberStates[] = {MemberState::complete, MemberState::fresh, MemberState::running,
+                                                   MemberState::interrupted, MemberState::unstable,
+                                                   MemberState::stopped, MemberState::failed, MemberState::unreadable};
 
 // What a running capsule last said about itself (member.h5.progress, solver/run/progress.hpp).
 struct MemberProgress {
@@ -52,6 +58,8 @@ MemberCondition inspect_member(const MemberPaths& paths, const std::string& expe
 // only with rerun_unstable (same id = same scene and physics = same blow-up) and stopped
 // only with rerun_stopped (the solver refused the configuration: rerunning it gives the
 // same stop). A failed member (no member file: killed, crashed, foreign file) is retried.
+// An unreadable member file is never run over: it may be complete (held open with HDF5's
+// file lock by another process, or not readable to this user); the user decides.
 bool needs_run(const MemberCondition& condition, bool rerun_unstable, bool rerun_stopped);
 
 }  // namespace capsule::study

@@ -139,7 +139,8 @@ void print_plan(const Campaign& plan_campaign, const ResultsLayout& layout, std:
         }
         std::string params;
         for (const auto& [key, value] : m.parameters) params += (params.empty() ? "" : ", ") + key + "=" + value.dump();
-        out << std::left << std::setw(5) << i << std::setw(12) << state_name(condition.state) << std::setw(4) << dim
+        // The index never runs into the state: past 9999 members the column widens.
+        out << std::left << std::setw(4) << i << ' ' << std::setw(12) << state_name(condition.state) << std::setw(4) << dim
             << std::setw(12) << c.nodes << std::setw(14) << ((c.kt_is_bound ? "<=" : "") + format_number(c.kt_span))
             << std::setw(12) << node_steps << std::setw(10) << seconds << std::setw(10) << format_bytes(c.memory_bytes)
             << m.dir_name();
@@ -158,7 +159,9 @@ void print_plan(const Campaign& plan_campaign, const ResultsLayout& layout, std:
   out << members << " members: " << counts[MemberState::complete] << " complete, " << counts[MemberState::fresh]
       << " new, " << counts[MemberState::running] << " running, " << counts[MemberState::interrupted]
       << " interrupted, " << counts[MemberState::failed] << " failed, " << counts[MemberState::unstable]
-      << " unstable, " << counts[MemberState::stopped] << " stopped\n";
+      << " unstable, " << counts[MemberState::stopped] << " stopped";
+  if (counts[MemberState::unreadable] > 0) out << ", " << counts[MemberState::unreadable] << " unreadable";
+  out << "\n";
   if (copies > 0)
     out << copies << " of them finished in other campaigns under " << layout.root.parent_path().string()
         << " (same scene and physics version): `study run` copies " << (copies > 1 ? "them" : "it")
@@ -182,7 +185,7 @@ void print_plan(const Campaign& plan_campaign, const ResultsLayout& layout, std:
             << " their model length, as " << k.length_members << " member" << (k.length_members > 1 ? "s" : "")
             << " that ran took\n";
     }
-    out << "  (seconds: '~' estimated from the cost model, README \"Time and memory estimates\"; a phase that ends on a\n"
+    out << "  (seconds: '~' estimated from the cost model, docs/guide/running.md \"Time and memory estimates\"; a phase that ends on a\n"
            "   condition counts at its expected end, a theta/beta stop at its cap)\n";
   }
 }

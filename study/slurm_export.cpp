@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <sstream>
 
+#include "build_info.hpp"
 #include "study/capsule_binary.hpp"
+#include "study/provenance.hpp"
 #include "study/finished_elsewhere.hpp"
 #include "study/script_path.hpp"
 #include "study/member_wrapper.hpp"
+#include "study/run_lock.hpp"
 #include "study/shell_quote.hpp"
 
 namespace capsule::study {
@@ -39,10 +42,16 @@ std::string sbatch_output_line(const fs::path& slurm_dir) {
 SlurmExport export_slurm(const CampaignSurvey& survey, const SlurmOptions& options) {
   const fs::path capsule_binary = find_capsule_binary();
   const fs::path slurm_dir = survey.layout.slurm_dir();
+  require_committed_build(build::code_version, options.allow_dirty, "study export");
   // Every path that reaches the job list or a script, checked before anything is written.
   require_script_safe("the results folder", survey.layout.root);
   require_script_safe("the capsule binary's path", capsule_binary);
   const std::string output_line = sbatch_output_line(slurm_dir);
+
+  // A `study run` of this campaign still going would start members this export lists: one
+  // member would then run twice in one folder. Held while exporting (exit 5 like run).
+  fs::create_directories(survey.layout.root);
+  const RunLock lock(survey.layout.lock_file(), survey.layout.running_info(), members_in_progress(survey));
 
   SlurmExport result;
   result.job_list = slurm_dir / "jobs";

@@ -17,6 +17,7 @@ struct SlurmOptions {
   bool rerun_unstable = false;
   bool rerun_stopped = false;
   bool reuse_finished = true;  // copy a member another campaign finished instead of exporting it (finished_elsewhere.hpp)
+  bool allow_dirty = false;    // export from a build whose sources differ from every commit (provenance.hpp)
 };
 
 struct SlurmExport {

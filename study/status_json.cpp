@@ -6,8 +6,7 @@ namespace capsule::study {
 
 nlohmann::json status_json(const CampaignSurvey& survey) {
   nlohmann::json counts = nlohmann::json::object();
-  for (auto state : {MemberState::complete, MemberState::fresh, MemberState::interrupted, MemberState::unstable,
-                     MemberState::stopped, MemberState::failed})
+  for (auto state : kAllMemberStates)
     counts[state_name(state)] = survey.count(state);
   nlohmann::json not_complete = nlohmann::json::array();
   for (std::size_t i = 0; i < survey.members.size(); ++i) {

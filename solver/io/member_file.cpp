@@ -2,31 +2,23 @@
 
 #include <hdf5.h>
 
+#include <cerrno>
+#include <cstring>
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <stdexcept>
 
+#include "solver/io/content_hash.hpp"
+#include "solver/io/hdf5_dataset.hpp"
+#include "solver/io/hdf5_handle.hpp"
+
 namespace capsule::io {
 namespace {
 
-// Closes an HDF5 handle at scope exit.
-class Handle {
- public:
-  Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
-  ~Handle() {
-    if (id_ >= 0) close_(id_);
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  operator hid_t() const { return id_; }
-  bool ok() const { return id_ >= 0; }
-
- private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
+using Handle = Hdf5Handle;
 
 [[noreturn]] void fail(const std::string& path, const std::string& what) {
   throw std::runtime_error(path + ": " + what);
@@ -64,11 +56,43 @@ void write_scalar_attr(hid_t obj, const std::string& name, T value, hid_t mem_ty
 void write_matrix(hid_t group, const std::string& name, const double* data, hsize_t rows, hsize_t cols,
                   const std::string& path) {
   hsize_t dims[2] = {rows, cols};
-  Handle space(H5Screate_simple(cols == 0 ? 1 : 2, dims, nullptr), H5Sclose);
-  Handle set(H5Dcreate2(group, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-             H5Dclose);
+  Handle set = create_dataset(group, name, H5T_IEEE_F64LE, cols == 0 ? 1 : 2, dims, DatasetFilters::checksum_compressed);
   if (!set.ok()) fail(path, "cannot create dataset " + name);
   if (rows > 0) check(H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), path, "write " + name);
+}
+
+// The parts of a member file as the content hash sees them (content_hash.hpp): the writer and
+// read_member describe the same file in the same words.
+void digest_doubles(ContentDigest& d, const std::string& name, const double* data, std::size_t n,
+                    std::uint64_t rows, std::uint64_t cols) {
+  Fnv1a64 h;
+  h.add(&rows, sizeof rows);
+  h.add(&cols, sizeof cols);
+  h.add(data, n * sizeof(double));
+  const std::uint64_t v = h.value();
+  d.add(name, 'f', &v, sizeof v);
+}
+void digest_attribute(ContentDigest& d, const std::string& name, const nlohmann::json& value) {
+  if (value.is_string()) {
+    const std::string s = value.get<std::string>();
+    d.add(name, 's', s.data(), s.size());
+  } else if (value.is_number_integer()) {
+    const std::int64_t x = value.get<std::int64_t>();
+    d.add(name, 'i', &x, sizeof x);
+  } else if (value.is_number()) {
+    const double x = value.get<double>();
+    d.add(name, 'd', &x, sizeof x);
+  }
+}
+
+// Why H5Fopen refused a file: what the system said (a lock held by another process, no
+// permission), or that it is not an HDF5 file.
+std::string unreadable_file_reason() {
+  const int err = errno;
+  std::string why = "not a readable HDF5 member file";
+  if (err == EWOULDBLOCK || err == EAGAIN) why += " (another process holds it locked: HDF5's file lock)";
+  else if (err != 0 && err != ENOENT) why += std::string(" (") + std::strerror(err) + ")";
+  return why;
 }
 
 // HDF5 prints its own error stack to stderr by default (twenty lines for a missing
@@ -114,29 +138,43 @@ void MemberWriter::add_shape(double kt, const std::vector<double>& xyz, int dim,
 }
 
 void MemberWriter::write(const std::string& path, const std::string& status) const {
-  Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+  ContentDigest digest;
+  Handle file = create_checked_file(path);
   if (!file.ok()) fail(path, "cannot create the member file");
   write_string_attr(file, "status", status, path);
+  digest_attribute(digest, "@status", std::string(status.c_str()));
   for (const auto& [name, value] : attributes_) {
-    if (name == "status") continue;
-    if (auto s = std::get_if<std::string>(&value)) write_string_attr(file, name, *s, path);
-    else if (auto d = std::get_if<double>(&value))
+    if (name == "status" || name == kContentHashAttribute) continue;
+    if (auto s = std::get_if<std::string>(&value)) {
+      write_string_attr(file, name, *s, path);
+      digest_attribute(digest, "@" + name, std::string(s->c_str()));  // HDF5 stores the text up to a NUL
+    } else if (auto d = std::get_if<double>(&value)) {
       write_scalar_attr(file, name, *d, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, path);
-    else write_scalar_attr(file, name, std::get<long>(value), H5T_NATIVE_LONG, H5T_STD_I64LE, path);
+      digest_attribute(digest, "@" + name, *d);
+    } else {
+      write_scalar_attr(file, name, std::get<long>(value), H5T_NATIVE_LONG, H5T_STD_I64LE, path);
+      digest_attribute(digest, "@" + name, static_cast<std::int64_t>(std::get<long>(value)));
+    }
   }
   {
     Handle series(H5Gcreate2(file, "series", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
-    for (const auto& c : columns_) write_matrix(series, c, series_.at(c).data(), rows_, 0, path);
+    for (const auto& c : columns_) {
+      write_matrix(series, c, series_.at(c).data(), rows_, 0, path);
+      digest_doubles(digest, "series/" + c, series_.at(c).data(), rows_, rows_, 0);
+    }
     if (!beta_.empty()) {
       std::vector<double> flat;
       for (const auto& r : beta_) flat.insert(flat.end(), r.begin(), r.end());
       write_matrix(series, "beta", flat.data(), beta_.size(), beta_.front().size(), path);
+      digest_doubles(digest, "series/beta", flat.data(), flat.size(), beta_.size(), beta_.front().size());
     }
   }
   {
     Handle markers(H5Gcreate2(file, "markers", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
-    for (const auto& [name, v] : markers_)
+    for (const auto& [name, v] : markers_) {
       write_scalar_attr(markers, name, v, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, path);
+      digest_attribute(digest, "markers@" + name, v);
+    }
   }
   if (!shapes_.empty()) {
     Handle shapes(H5Gcreate2(file, "shapes", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
@@ -147,29 +185,42 @@ void MemberWriter::write(const std::string& path, const std::string& status) con
       write_matrix(shapes, name, s.xyz.data(), s.xyz.size() / s.dim, s.dim, path);
       Handle set(H5Dopen2(shapes, name, H5P_DEFAULT), H5Dclose);
       write_scalar_attr(set, "kt", s.kt, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, path);
+      digest_doubles(digest, std::string("shapes/") + name, s.xyz.data(), s.xyz.size(), s.xyz.size() / s.dim,
+                     static_cast<std::uint64_t>(s.dim));
+      digest_attribute(digest, std::string("shapes/") + name + "@kt", s.kt);
     }
     if (!triangles_.empty()) {
       hsize_t dims[2] = {triangles_.size() / 3, 3};
-      Handle space(H5Screate_simple(2, dims, nullptr), H5Sclose);
-      Handle set(H5Dcreate2(shapes, "triangles", H5T_STD_I32LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                 H5Dclose);
+      Handle set = create_dataset(shapes, "triangles", H5T_STD_I32LE, 2, dims, DatasetFilters::checksum_compressed);
+      if (!set.ok()) fail(path, "cannot create dataset triangles");
       check(H5Dwrite(set, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, triangles_.data()), path, "triangles");
+      digest.add("shapes/triangles", 'n', triangles_.data(), triangles_.size() * sizeof(int));
     }
   }
+  write_string_attr(file, kContentHashAttribute, digest.hex(), path);
   check(H5Fflush(file, H5F_SCOPE_GLOBAL), path, "cannot flush");
 }
 
-void MemberWriter::checkpoint() {
-  // Write beside, then rename: the .partial file is always readable.
-  std::string tmp = partial_path() + ".tmp";
-  write(tmp, "running");
-  std::filesystem::rename(tmp, partial_path());
+void MemberWriter::write_then_rename(const std::string& status, const std::string& to) const {
+  // Write beside, then rename: the file at `to` is always a whole one. A failed write (disk
+  // full, say) names errno's reason and leaves no temporary file behind.
+  const std::string tmp = partial_path() + ".tmp";
+  errno = 0;
+  try {
+    write(tmp, status);
+  } catch (const std::runtime_error& e) {
+    const int err = errno;
+    std::error_code ec;
+    std::filesystem::remove(tmp, ec);
+    throw std::runtime_error(std::string(e.what()) + (err != 0 ? std::string(" (") + std::strerror(err) + ")" : ""));
+  }
+  std::filesystem::rename(tmp, to);
 }
 
+void MemberWriter::checkpoint() { write_then_rename("running", partial_path()); }
+
 void MemberWriter::finish(const std::string& status) {
-  std::string tmp = partial_path() + ".tmp";
-  write(tmp, status);
-  std::filesystem::rename(tmp, partial_path());
+  write_then_rename(status, partial_path());
   std::filesystem::rename(partial_path(), final_path_);
 }
 
@@ -283,16 +334,24 @@ nlohmann::json read_attributes(hid_t obj, const std::string& path) {
   return out;
 }
 
-std::vector<double> read_doubles(hid_t set, std::vector<hsize_t>& dims) {
+std::vector<double> read_doubles(hid_t set, std::vector<hsize_t>& dims, const std::string& path,
+                                 const std::string& name) {
   Handle space(H5Dget_space(set), H5Sclose);
   int rank = H5Sget_simple_extent_ndims(space);
+  if (rank < 0) fail(path, "dataset " + name + " has no readable extent");
   dims.assign(rank, 0);
   H5Sget_simple_extent_dims(space, dims.data(), nullptr);
   hsize_t n = 1;
   for (auto d : dims) n *= d;
   std::vector<double> out(n);
-  if (n > 0) H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data());
+  read_whole_dataset(set, H5T_NATIVE_DOUBLE, out.data(), path, name);
   return out;
+}
+
+Handle open_dataset(hid_t group, const std::string& name, const std::string& path) {
+  Handle set(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose);
+  if (!set.ok()) fail(path, "cannot open dataset " + name + ": the file is damaged");
+  return set;
 }
 
 struct NameList {
@@ -314,13 +373,17 @@ std::vector<std::string> children(hid_t group) {
 MemberData read_member(const std::string& path) {
   static QuietHdf5 quiet;
   if (!std::filesystem::exists(path)) fail(path, "no such member file");
+  errno = 0;
   Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-  if (!file.ok()) fail(path, "not a readable HDF5 member file");
+  if (!file.ok()) fail(path, unreadable_file_reason());
   MemberData m;
   m.path = path;
   m.attributes = read_attributes(file, path);
   if (!m.attributes.contains("status")) fail(path, "no status attribute: not a member file");
   m.status = m.attributes["status"].get<std::string>();
+  ContentDigest digest;
+  for (auto it = m.attributes.begin(); it != m.attributes.end(); ++it)
+    if (it.key() != kContentHashAttribute) digest_attribute(digest, "@" + it.key(), it.value());
   if (m.attributes.contains("scene") && m.attributes["scene"].is_string()) {
     try {
       m.attributes["scene"] = nlohmann::json::parse(m.attributes["scene"].get<std::string>());
@@ -331,9 +394,11 @@ MemberData read_member(const std::string& path) {
   if (H5Lexists(file, "series", H5P_DEFAULT) > 0) {
     Handle series(H5Gopen2(file, "series", H5P_DEFAULT), H5Gclose);
     for (const auto& name : children(series)) {
-      Handle set(H5Dopen2(series, name.c_str(), H5P_DEFAULT), H5Dclose);
+      Handle set = open_dataset(series, name, path);
       std::vector<hsize_t> dims;
-      auto data = read_doubles(set, dims);
+      auto data = read_doubles(set, dims, path, "series/" + name);
+      digest_doubles(digest, "series/" + name, data.data(), data.size(), dims.empty() ? 0 : dims[0],
+                     dims.size() == 2 ? dims[1] : 0);
       if (name == "beta" && dims.size() == 2) {
         for (hsize_t r = 0; r < dims[0]; ++r)
           m.beta.emplace_back(data.begin() + r * dims[1], data.begin() + (r + 1) * dims[1]);
@@ -345,38 +410,66 @@ MemberData read_member(const std::string& path) {
   if (H5Lexists(file, "markers", H5P_DEFAULT) > 0) {
     Handle markers(H5Gopen2(file, "markers", H5P_DEFAULT), H5Gclose);
     auto a = read_attributes(markers, path);
-    for (auto it = a.begin(); it != a.end(); ++it)
+    for (auto it = a.begin(); it != a.end(); ++it) {
+      digest_attribute(digest, "markers@" + it.key(), it.value());
       m.markers[it.key()] = it.value().is_number() ? it.value().get<double>() : std::nan("");
+    }
   }
   if (H5Lexists(file, "shapes", H5P_DEFAULT) > 0) {
     Handle shapes(H5Gopen2(file, "shapes", H5P_DEFAULT), H5Gclose);
     for (const auto& name : children(shapes)) {
-      Handle set(H5Dopen2(shapes, name.c_str(), H5P_DEFAULT), H5Dclose);
+      Handle set = open_dataset(shapes, name, path);
       if (name == "triangles") {
         Handle space(H5Dget_space(set), H5Sclose);
         hsize_t dims[2] = {0, 0};
         H5Sget_simple_extent_dims(space, dims, nullptr);
         m.triangles.resize(dims[0] * dims[1]);
-        if (!m.triangles.empty())
-          H5Dread(set, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, m.triangles.data());
+        read_whole_dataset(set, H5T_NATIVE_INT, m.triangles.data(), path, "shapes/triangles");
+        digest.add("shapes/triangles", 'n', m.triangles.data(), m.triangles.size() * sizeof(int));
         continue;
       }
       std::vector<hsize_t> dims;
       MemberData::Shape s;
-      s.xyz = read_doubles(set, dims);
+      s.xyz = read_doubles(set, dims, path, "shapes/" + name);
       s.dim = dims.size() == 2 ? static_cast<int>(dims[1]) : 1;
       auto a = read_attributes(set, path);
       s.kt = a.contains("kt") ? a["kt"].get<double>() : std::nan("");
+      digest_doubles(digest, "shapes/" + name, s.xyz.data(), s.xyz.size(), dims.empty() ? 0 : dims[0],
+                     dims.size() == 2 ? dims[1] : 0);
+      if (a.contains("kt")) digest_attribute(digest, "shapes/" + name + "@kt", a["kt"]);
       m.shapes.push_back(std::move(s));
     }
+  }
+  // Files written before the content hash existed have none and are read as they are.
+  if (m.attributes.contains(kContentHashAttribute)) {
+    const auto& recorded = m.attributes[kContentHashAttribute];
+    if (!recorded.is_string() || recorded.get<std::string>() != digest.hex())
+      fail(path, std::string("content hash does not match (recorded ") +
+                     (recorded.is_string() ? recorded.get<std::string>() : "not a text") + ", the file's content " +
+                     digest.hex() + "): the file was changed or damaged after it was written");
   }
   return m;
 }
 
+std::string missing_series(const MemberData& member) {
+  const auto kt = member.series.find("kt");
+  if (kt == member.series.end() || kt->second.empty()) return member.path + ": no series kt";
+  if (!member.series.count("D_xy")) return member.path + ": no series D_xy";
+  for (const auto& [name, values] : member.series)
+    if (values.size() != kt->second.size())
+      return member.path + ": series " + name + " has " + std::to_string(values.size()) + " rows, kt has " +
+             std::to_string(kt->second.size());
+  if (!member.beta.empty() && member.beta.size() != kt->second.size())
+    return member.path + ": series beta has " + std::to_string(member.beta.size()) + " rows, kt has " +
+           std::to_string(kt->second.size());
+  return "";
+}
+
 MemberStatus read_member_status(const std::string& path) {
   static QuietHdf5 quiet;
+  errno = 0;
   Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-  if (!file.ok()) fail(path, "not a readable HDF5 member file");
+  if (!file.ok()) fail(path, unreadable_file_reason());
   auto a = read_attributes(file, path);
   MemberStatus s;
   if (a.contains("status") && a["status"].is_string()) s.status = a["status"];

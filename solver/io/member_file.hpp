@@ -1,5 +1,5 @@
 #pragma once
-// One HDF5 file per member (CONTRACTS.md, README "Member files").
+// One HDF5 file per member (docs/CONTRACTS.md "Member file", docs/guide/member-files.md "Layout").
 // Written to <path>.partial and renamed to <path> when the member ends, so a killed
 // run never leaves a file that looks finished.
 #include <limits>
@@ -12,6 +12,10 @@
 #include "solver/io/state_archive.hpp"
 
 namespace capsule::io {
+
+// The root attribute holding the file's content hash (content_hash.hpp) over every attribute
+// and dataset; read_member recomputes it and refuses a file whose content changed.
+inline constexpr const char* kContentHashAttribute = "content_hash";
 
 class MemberWriter {
  public:
@@ -45,6 +49,7 @@ class MemberWriter {
 
  private:
   void write(const std::string& path, const std::string& status) const;
+  void write_then_rename(const std::string& status, const std::string& to) const;
 
   std::string final_path_;
   std::map<std::string, std::variant<std::string, double, long>> attributes_;
@@ -80,8 +85,14 @@ struct MemberData {
   bool unstable() const { return status.rfind("unstable", 0) == 0; }
 };
 
-// Reads a member file (final or .partial). Throws std::runtime_error naming the file.
+// Reads a member file (final or .partial). Throws std::runtime_error naming the file, also
+// when a dataset's checksum or the file's content hash does not match (the file was damaged).
 MemberData read_member(const std::string& path);
+
+// What is wrong with a complete member's series, "" when nothing: every member writes kt and
+// D_xy (what every analysis reads), and every series has one row per output time. A file from before the content
+// hash can lose a dataset unnoticed by read_member; this catches that.
+std::string missing_series(const MemberData& member);
 
 // Status and member id only, cheaply (for planners deciding what to rerun).
 struct MemberStatus {

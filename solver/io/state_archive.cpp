@@ -1,9 +1,12 @@
 #include "solver/io/state_archive.hpp"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 
+#include "solver/io/hdf5_dataset.hpp"
 #include "solver/io/hdf5_handle.hpp"
 
 namespace capsule::io {
@@ -22,8 +25,7 @@ template <class T>
 void write_array(hid_t file, const std::string& name, const std::vector<T>& v, hid_t mem, hid_t disk,
                  const std::string& path) {
   const hsize_t n = v.size();
-  Hdf5Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose);
-  Hdf5Handle set(H5Dcreate2(file, name.c_str(), disk, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
+  Hdf5Handle set = create_dataset(file, name, disk, 1, &n, DatasetFilters::checksum);
   if (!set.ok()) fail(path, "cannot create " + name);
   if (n > 0 && H5Dwrite(set, mem, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0) fail(path, "cannot write " + name);
 }
@@ -31,9 +33,7 @@ void write_array(hid_t file, const std::string& name, const std::vector<T>& v, h
 void write_text(hid_t file, const std::string& name, const std::string& text, const std::string& path) {
   // Texts as byte arrays: any content (JSON with line breaks, NUL-free or not) round-trips.
   const hsize_t n = text.size();
-  Hdf5Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose);
-  Hdf5Handle set(H5Dcreate2(file, name.c_str(), H5T_STD_U8LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                 H5Dclose);
+  Hdf5Handle set = create_dataset(file, name, H5T_STD_U8LE, 1, &n, DatasetFilters::checksum);
   if (!set.ok()) fail(path, "cannot create " + name);
   if (n > 0 && H5Dwrite(set, H5T_NATIVE_UCHAR, H5S_ALL, H5S_ALL, H5P_DEFAULT, text.data()) < 0)
     fail(path, "cannot write " + name);
@@ -92,14 +92,21 @@ std::size_t StateArchive::payload_bytes() const {
 void StateArchive::write(const std::string& path) const {
   silence_hdf5_errors();
   const std::string tmp = path + ".tmp";
-  {
-    Hdf5Handle file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+  errno = 0;
+  try {
+    Hdf5Handle file = create_checked_file(tmp);
     if (!file.ok()) fail(tmp, "cannot create the restart point");
     write_array(file, kMagicName, std::vector<std::int64_t>{1}, H5T_NATIVE_INT64, H5T_STD_I64LE, tmp);
     for (const auto& [name, v] : doubles_) write_array(file, name, v, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, tmp);
     for (const auto& [name, v] : ints_) write_array(file, name, v, H5T_NATIVE_INT64, H5T_STD_I64LE, tmp);
     for (const auto& [name, t] : texts_) write_text(file, name, t, tmp);
     if (H5Fflush(file, H5F_SCOPE_GLOBAL) < 0) fail(tmp, "cannot flush");
+  } catch (const std::runtime_error& e) {
+    // Disk full, say: name errno's reason and leave no temporary file behind.
+    const int err = errno;
+    std::error_code ec;
+    std::filesystem::remove(tmp, ec);
+    throw std::runtime_error(std::string(e.what()) + (err != 0 ? std::string(" (") + std::strerror(err) + ")" : ""));
   }
   std::error_code ec;
   std::filesystem::rename(tmp, path, ec);
@@ -125,23 +132,22 @@ StateArchive StateArchive::read(const std::string& path) {
     const hssize_t n = H5Sget_simple_extent_npoints(space);
     if (n < 0) fail(path, "bad extent of " + name);
     const bool is_text = H5Aexists(set, "text") > 0;
-    herr_t r = 0;
+    // A chunk whose Fletcher32 checksum does not match its bytes fails to read: refused.
     if (is_text) {
       std::string t(static_cast<std::size_t>(n), '\0');
-      if (n > 0) r = H5Dread(set, H5T_NATIVE_UCHAR, H5S_ALL, H5S_ALL, H5P_DEFAULT, t.data());
+      read_whole_dataset(set, H5T_NATIVE_UCHAR, t.data(), path, name);
       a.texts_[name] = std::move(t);
     } else if (H5Tget_class(type) == H5T_FLOAT) {
       std::vector<double> v(static_cast<std::size_t>(n));
-      if (n > 0) r = H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
+      read_whole_dataset(set, H5T_NATIVE_DOUBLE, v.data(), path, name);
       a.doubles_[name] = std::move(v);
     } else if (H5Tget_class(type) == H5T_INTEGER) {
       std::vector<std::int64_t> v(static_cast<std::size_t>(n));
-      if (n > 0) r = H5Dread(set, H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
+      read_whole_dataset(set, H5T_NATIVE_INT64, v.data(), path, name);
       a.ints_[name] = std::move(v);
     } else {
       fail(path, "dataset " + name + " has an unexpected type");
     }
-    if (r < 0) fail(path, "cannot read " + name);
   }
   return a;
 }

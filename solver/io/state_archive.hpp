@@ -1,6 +1,6 @@
 #pragma once
 // A restart point on disk: a flat set of named arrays (float64, int64) and texts in one HDF5
-// file (README "Checkpoints"). What the names mean is decided by the parts that save their
+// file (docs/guide/running.md "Checkpoints"). What the names mean is decided by the parts that save their
 // state (solver/run/checkpoint.hpp); this file only stores and reloads them exactly: doubles
 // are written as IEEE float64 and come back bit for bit (NaN included).
 //

@@ -4,10 +4,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <ostream>
 #include <vector>
 
 #include "build_info.hpp"
+#include "solver/io/content_hash.hpp"
+#include "solver/scene/json_text.hpp"
 #include "solver/scene/version.hpp"
 
 namespace capsule {
@@ -27,19 +30,14 @@ const std::string& binary_fingerprint() {
   static const std::string fingerprint = [] {
     std::ifstream in("/proc/self/exe", std::ios::binary);
     if (!in) return std::string("unknown");
-    std::uint64_t h = 14695981039346656037ull;  // FNV-1a 64
+    io::Fnv1a64 h;
     std::vector<char> buf(1 << 20);
     while (in.read(buf.data(), static_cast<std::streamsize>(buf.size())) || in.gcount() > 0) {
       const std::streamsize n = in.gcount();
-      for (std::streamsize i = 0; i < n; ++i) {
-        h ^= static_cast<unsigned char>(buf[static_cast<std::size_t>(i)]);
-        h *= 1099511628211ull;
-      }
+      h.add(buf.data(), static_cast<std::size_t>(n));
       if (n < static_cast<std::streamsize>(buf.size())) break;
     }
-    char text[17];
-    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
-    return std::string(text);
+    return h.hex();
   }();
   return fingerprint;
 }
@@ -57,10 +55,25 @@ void put_identity(io::StateArchive& a, const RestartIdentity& id) {
   a.put_text("identity.member_id", id.member_id);
 }
 
+// The first key where two canonical scenes differ, as "key: saved -> now" (JSON pointer form
+// turned dotted), or "the scene text" when either does not parse.
+static std::string scene_difference(const std::string& saved, const std::string& now) {
+  const nlohmann::json a = nlohmann::json::parse(saved, nullptr, false), b = nlohmann::json::parse(now, nullptr, false);
+  if (a.is_discarded() || b.is_discarded()) return "the scene text differs";
+  const nlohmann::json patch = nlohmann::json::diff(a, b);
+  if (patch.empty()) return "the scene text differs";
+  const nlohmann::json::json_pointer where(patch[0].at("path").get<std::string>());
+  std::string key = where.to_string().substr(1);
+  for (auto& c : key) c = c == '/' ? '.' : c;
+  const std::string before = a.contains(where) ? message_value(a.at(where)) : "(absent)";
+  const std::string after = b.contains(where) ? message_value(b.at(where)) : "(absent)";
+  return "key " + message_text(key) + ": " + before + " in the restart point, " + after + " now";
+}
+
 std::string identity_mismatch(const io::StateArchive& a, const RestartIdentity& id) {
   const auto text = [&](const char* name) { return a.has(name) ? a.text(name) : std::string("(none)"); };
   if (text("identity.format") != kRestartFormat) return "another restart format (" + text("identity.format") + ")";
-  if (text("identity.scene") != id.scene) return "another scene";
+  if (text("identity.scene") != id.scene) return "another scene (" + scene_difference(text("identity.scene"), id.scene) + ")";
   if (text("identity.physics_version") != id.physics_version)
     return "physics version " + text("identity.physics_version") + ", this solver's is " + id.physics_version;
   if (text("identity.member_id") != id.member_id)

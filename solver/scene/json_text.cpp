@@ -1,5 +1,6 @@
 #include "solver/scene/json_text.hpp"
 
+#include <cstdio>
 #include <set>
 #include <vector>
 
@@ -30,6 +31,27 @@ struct DuplicateKey {
   std::string path;
 };
 
+struct TooDeep {
+  std::string path;
+};
+
+// Escapes control characters (and DEL) as \u00XX; leaves everything else as it is.
+std::string escape_controls(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 0x20 || u == 0x7f) {
+      char code[8];
+      std::snprintf(code, sizeof code, "\\u%04x", u);
+      out += code;
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 json parse_json_text(const std::string& text, const std::string& source) {
@@ -40,8 +62,11 @@ json parse_json_text(const std::string& text, const std::string& source) {
   };
   const json::parser_callback_t watch = [&](int, json::parse_event_t event, json& parsed) {
     switch (event) {
-      case json::parse_event_t::object_start: frames.push_back(Frame{}); break;
-      case json::parse_event_t::array_start: frames.push_back(Frame{true, {}, {}, 0}); break;
+      case json::parse_event_t::object_start:
+      case json::parse_event_t::array_start:
+        if (frames.size() >= kMaxJsonDepth) throw TooDeep{path_of(frames)};
+        frames.push_back(event == json::parse_event_t::array_start ? Frame{true, {}, {}, 0} : Frame{});
+        break;
       case json::parse_event_t::key: {
         Frame& f = frames.back();
         f.key = parsed.get<std::string>();
@@ -60,21 +85,38 @@ json parse_json_text(const std::string& text, const std::string& source) {
   try {
     return json::parse(text, watch, /*allow_exceptions=*/true, /*ignore_comments=*/true);
   } catch (const DuplicateKey& d) {
-    throw JsonTextError(source + ": " + d.path + ": key given twice (allowed: each key once per object)");
+    throw JsonTextError(source + ": " + message_text(d.path) + ": key given twice (allowed: each key once per object)");
+  } catch (const TooDeep& d) {
+    throw JsonTextError(source + ": " + message_text(d.path.empty() ? "(top level)" : d.path) +
+                        ": nested deeper than " + std::to_string(kMaxJsonDepth) +
+                        " levels (allowed: at most " + std::to_string(kMaxJsonDepth) + " nested objects or arrays)");
   } catch (const json::exception& e) {  // parse_error, and out_of_range for a number overflow (1e400)
     std::string what = e.what();
     const auto bracket = what.find("] ");  // drop nlohmann's "[json.exception.parse_error.101] "
     if (what.rfind("[json.exception.", 0) == 0 && bracket != std::string::npos) what = what.substr(bracket + 2);
     // The frames still say where the parser was: the key whose value did not parse.
-    std::string where = path_of(frames);
+    std::string where = message_text(path_of(frames));
     if (where.empty()) where = "(top level)";
     std::string allowed;
     if (dynamic_cast<const json::out_of_range*>(&e) != nullptr)
       allowed = " (allowed: numbers of magnitude below 1.8e308)";
     else if (what.find("invalid literal") != std::string::npos)
       allowed = " (allowed: a number, string, true, false, null, object or array; NaN and Infinity are not JSON)";
-    throw JsonTextError(source + ": " + where + ": not valid JSON: " + what + allowed);
+    throw JsonTextError(source + ": " + where + ": not valid JSON: " + message_text(what) + allowed);
   }
+}
+
+std::string message_text(const std::string& text) {
+  const std::string escaped = escape_controls(text);
+  if (escaped.size() <= kMessageChars) return escaped;
+  return escaped.substr(0, kMessageChars) + "... (" + std::to_string(text.size()) + " characters)";
+}
+
+std::string message_value(const nlohmann::json& value) {
+  // A string in quotes with its own length; anything else as its JSON text (invalid UTF-8 is
+  // replaced, not thrown).
+  if (value.is_string()) return "\"" + message_text(value.get<std::string>()) + "\"";
+  return message_text(value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
 }
 
 }  // namespace capsule

@@ -33,7 +33,7 @@ class ObjectReader {
                          const std::string& allowed) const {
     std::string where = path_.empty() ? key : (key.empty() ? path_ : path_ + "." + key);
     if (where.empty()) where = "(top level)";
-    throw SceneError(source_ + ": " + where + ": " + problem +
+    throw SceneError(source_ + ": " + message_text(where) + ": " + problem +
                      (allowed.empty() ? "" : " (allowed: " + allowed + ")"));
   }
 
@@ -51,7 +51,7 @@ class ObjectReader {
       return *fallback;
     }
     const json& v = j_.at(key);
-    if (!v.is_number()) fail(key, "expected a number, got " + v.dump(), range);
+    if (!v.is_number()) fail(key, "expected a number, got " + message_value(v), range);
     double x = v.get<double>();
     if (!std::isfinite(x) || (lo_open ? x <= lo : x < lo) || (hi_open ? x >= hi : x > hi))
       fail(key, "value " + fmt(x) + " out of range", range);
@@ -63,7 +63,7 @@ class ObjectReader {
     if (!has(key)) return fallback;
     const json& v = j_.at(key);
     if (!v.is_number() || std::floor(v.get<double>()) != v.get<double>())
-      fail(key, "expected an integer, got " + v.dump(), range);
+      fail(key, "expected an integer, got " + message_value(v), range);
     double x = v.get<double>();
     if (x < lo || x > hi) fail(key, "value " + fmt(x) + " out of range", range);
     return static_cast<int>(x);
@@ -78,11 +78,11 @@ class ObjectReader {
       return *fallback;
     }
     const json& v = j_.at(key);
-    if (!v.is_string()) fail(key, "expected a string, got " + v.dump(), list);
+    if (!v.is_string()) fail(key, "expected a string, got " + message_value(v), list);
     std::string s = v.get<std::string>();
     for (const auto& a : allowed)
       if (s == a) return s;
-    fail(key, "unknown value \"" + s + "\"", list);
+    fail(key, "unknown value " + message_value(s), list);
   }
 
   std::vector<double> numbers(const std::string& key, std::vector<double> fallback, double lo,
@@ -91,13 +91,13 @@ class ObjectReader {
                         fmt(lo) + ", " + fmt(hi) + "]";
     if (!has(key)) return fallback;
     const json& v = j_.at(key);
-    if (!v.is_array()) fail(key, "expected an array, got " + v.dump(), range);
+    if (!v.is_array()) fail(key, "expected an array, got " + message_value(v), range);
     if (v.size() < min_n || v.size() > max_n)
       fail(key, "expected " + std::to_string(min_n) + ".." + std::to_string(max_n) +
                     " entries, got " + std::to_string(v.size()), range);
     std::vector<double> out;
     for (const auto& e : v) {
-      if (!e.is_number()) fail(key, "expected numbers, got " + e.dump(), range);
+      if (!e.is_number()) fail(key, "expected numbers, got " + message_value(e), range);
       double x = e.get<double>();
       if (!std::isfinite(x) || x < lo || x > hi) fail(key, "value " + fmt(x) + " out of range", range);
       out.push_back(x);
@@ -262,7 +262,7 @@ Scene Scene::from_json(const json& j, const std::string& source) {
       const json& t = res.at("tau");
       if (!t.is_number() || (t.get<double>() != 0.0 &&
                              (t.get<double>() < 0.505 || t.get<double>() > 10.0)))
-        q.fail("tau", "relaxation time " + t.dump() + " cannot be run stably",
+        q.fail("tau", "relaxation time " + message_value(t) + " cannot be run stably",
                "0 (chosen by the solver) or [0.505, 10]");
       s.tau = t.get<double>();
     }

@@ -1,4 +1,4 @@
-// `study`: plan, run, track, export and analyse campaigns (README "Studies").
+// `study`: plan, run, track, export and analyse campaigns (docs/guide/campaigns.md "Commands").
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <iostream>
@@ -12,6 +12,7 @@
 #include "study/campaign_runner.hpp"
 #include "study/campaign_survey.hpp"
 #include "study/exit_status.hpp"
+#include "study/provenance.hpp"
 #include "study/plan_table.hpp"
 #include "study/run_lock.hpp"
 #include "study/script_path.hpp"
@@ -54,6 +55,8 @@ int main_body(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   run->add_option("--ssh", run_request.ssh_command, "ssh command for --hosts (GNU Parallel --ssh)");
   run->add_flag("--rerun-unstable", run_request.rerun_unstable, "also rerun members that ended unstable");
+  run->add_flag("--allow-dirty", run_request.allow_dirty,
+                "run even when this build's sources differ from every commit (recorded in run.json)");
   run->add_flag("--no-reuse{false}", run_request.reuse_finished,
                 "run every member here, even one that another campaign under the results folder finished "
                 "(default: copy that member's files)");
@@ -79,6 +82,10 @@ int main_body(int argc, char** argv) {
   report->footer(exit_status_help());
   report->add_option("campaign", report_file, "campaign JSON file")->required();
   report->add_option("--results", results_dir, "results folder")->capture_default_str();
+  ReportOptions report_options;
+  report->add_flag("--partial", report_options.partial,
+                   "write the report even when some member files cannot be read (report/PARTIAL.md names them); "
+                   "without it such a report is refused and the previous one kept");
 
   std::vector<std::string> compare_files;
   bool table2 = false;
@@ -110,6 +117,8 @@ int main_body(int argc, char** argv) {
                        "Slurm --mem per task (default: from the lattice size of the largest member)")
       ->check(slurm_form(is_slurm_mem, "megabytes, or a number with K, M, G or T"));
   exporter->add_flag("--rerun-unstable", slurm_options.rerun_unstable, "include members that ended unstable");
+  exporter->add_flag("--allow-dirty", slurm_options.allow_dirty,
+                     "export even when this build's sources differ from every commit");
   exporter->add_flag("--rerun-stopped", slurm_options.rerun_stopped, "include members that stopped");
   exporter->add_flag("--no-reuse{false}", slurm_options.reuse_finished,
                      "export every member, even one that another campaign under the results folder finished "
@@ -125,6 +134,8 @@ int main_body(int argc, char** argv) {
     print_plan(campaign, layout, std::cout);  // member by member: bounded memory
     return exit_ok;
   }
+  run_request.allow_dirty = run_request.allow_dirty || allow_dirty_from_environment();
+  slurm_options.allow_dirty = slurm_options.allow_dirty || allow_dirty_from_environment();
   if (*run) {
     run_request.results_dir = results_dir;
     run_request.progress_bar = ::isatty(STDOUT_FILENO) != 0;
@@ -136,7 +147,7 @@ int main_body(int argc, char** argv) {
     else print_status(survey, std::cout);
     return members_exit_code(survey);
   }
-  if (*report) return report_campaign(survey_campaign(report_file, results_dir), std::cout);
+  if (*report) return report_campaign(survey_campaign(report_file, results_dir), report_options, std::cout);
   if (*compare) return compare_campaign_files(compare_files, table2, results_dir, std::cout);
   if (*thesis) {
     const std::filesystem::path out = thesis_out.empty() ? std::filesystem::path(results_dir) / "THESIS.md"
@@ -170,6 +181,9 @@ int main(int argc, char** argv) {
     std::cerr << "study: " << e.what() << "\n";
     return exit_usage;
   } catch (const UnsafePathError& e) {
+    std::cerr << "study: " << e.what() << "\n";
+    return exit_usage;
+  } catch (const DirtyBuild& e) {
     std::cerr << "study: " << e.what() << "\n";
     return exit_usage;
   } catch (const RunStillGoing& e) {

@@ -1,7 +1,9 @@
-// Restart points inside a 2D member (README "Checkpoints"): a member killed and run again with
+// Restart points inside a 2D member (docs/guide/running.md "Checkpoints"): a member killed and run again with
 // the same command continues from its last restart point, and its rows, markers and shapes are
 // bitwise those of an uninterrupted run; restart points of another run are refused.
 #include <catch2/catch.hpp>
+
+#include "tests/support/hdf5_damage.hpp"
 
 #include "solver/io/state_archive.hpp"
 #include "tests/capsule/member_compare.hpp"
@@ -54,7 +56,9 @@ TEST_CASE("a restart point of another scene, another member id or a damaged one 
     const auto r = run_capsule(b, out);
     INFO(r.output);
     REQUIRE(r.exit_code == 0);
-    CHECK(r.output.find("refused: another scene; starting afresh") != std::string::npos);
+    // The key that changed is named, with both values.
+    CHECK(r.output.find("refused: another scene (key Ca: 0.05 in the restart point, 0.06 now); starting afresh") !=
+          std::string::npos);
     require_bitwise_equal(b_whole, io::read_member(out.string()));
   }
   SECTION("another member id") {
@@ -78,6 +82,16 @@ TEST_CASE("a restart point of another scene, another member id or a damaged one 
     CHECK(r.output.find("refused: restart point: the membrane's reference lengths differs") != std::string::npos);
     require_bitwise_equal(b_whole, io::read_member(out.string()));
   }
+  SECTION("one flipped bit in the saved series (Fletcher32 checksum)") {
+    REQUIRE(run_capsule(b, out, "--checkpoint-at-step 500 --stop-after-step 600").exit_code == 1);
+    capsule::testing::flip_bit_in_dataset(restart.string(), "member.series.D_xy");
+    const auto r = run_capsule(b, out);
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.output.find("refused: " + restart.string() + ": dataset member.series.D_xy cannot be read: its checksum "
+                        "does not match") != std::string::npos);
+    require_bitwise_equal(b_whole, io::read_member(out.string()));
+  }
   SECTION("a damaged file") {
     std::ofstream(restart) << "not HDF5";
     const auto r = run_capsule(b, out);
@@ -92,6 +106,8 @@ TEST_CASE("a restart point of another scene, another member id or a damaged one 
 TEST_CASE("restart points by wall time: --checkpoint-seconds writes them, 0 writes none", "[capsule2d][restart]") {
   const fs::path dir = scratch("2d_seconds");
   nlohmann::json s = tiny_2d();
+  // Long enough (about 0.4 s) that a 0.05 s interval comes round many times, on any machine.
+  s["protocol"]["recover"]["kt"] = 6.0;
   const fs::path scene = write_scene(dir, "s", s);
   // A tiny interval writes one at almost every step check; the member still completes and
   // records how many it wrote and what they cost.

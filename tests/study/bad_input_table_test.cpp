@@ -138,6 +138,19 @@ TEST_CASE("the bad-input table: every refusal exits with its code and names the 
       {"campaign number overflow", "study", plan, "c.json", campaign_raw_ca("1e400"), 2, {"FILE", "base.Ca: not valid JSON", "(allowed: numbers of magnitude below 1.8e308)"}},
       {"campaign NaN", "study", plan, "c.json", campaign_raw_ca("NaN"), 2, {"FILE", "base.Ca: not valid JSON", "NaN and Infinity are not JSON"}},
 
+      // Bounded input: nesting depth, and values quoted in messages escaped and cut.
+      {"scene nested 100 000 deep", "capsule", check, "s.json",
+       "{\"dim\": 2, \"x\": " + std::string(100000, '[') + std::string(100000, ']') + "}", 2,
+       {"FILE", "x[0][0]", "nested deeper than 64 levels", "(allowed: at most 64 nested objects or arrays)"}},
+      {"campaign nested 100 000 deep", "study", plan, "c.json",
+       "{\"name\": \"deep\", \"base\": " + std::string(100000, '[') + std::string(100000, ']') + "}", 2,
+       {"FILE", "base[0][0]", "nested deeper than 64 levels"}},
+      {"a 1 MB string with an ESC", "capsule", check, "s.json",
+       scene_with([](json& j) { j["shape"] = "\x1b[31m" + std::string(1000000, 'A'); }), 2,
+       {"FILE", "shape: unknown value \"\\u001b[31mAAAA", "... (1000005 characters)", "(allowed: circle | biconcave)"}},
+      {"a 1 MB key", "capsule", check, "s.json", scene_with([](json& j) { j[std::string(1000000, 'k')] = 1; }), 2,
+       {"FILE", "kkkk... (1000000 characters): unknown key"}},
+
       // Command lines.
       {"-j 0", "study", {"run", "FILE", "-j", "0"}, "c.json", campaign().dump(), 2, {"--jobs", "must be a whole number from 1 to 1000000, got \"0\""}},
       {"--threads -1", "study", {"run", "FILE", "--threads", "-1"}, "c.json", campaign().dump(), 2, {"--threads", "must be a whole number from 1 to 1000000"}},
@@ -163,8 +176,10 @@ TEST_CASE("the bad-input table: every refusal exits with its code and names the 
       for (const auto& a : args) line.append(" ").append(shell_quote(a));
       r = testing::run_shell(line.append(" </dev/null"));
     }
-    INFO(r.output);
+    INFO(r.output.substr(0, 2000));
     CHECK(r.exit_code == row.exit_code);
+    CHECK(r.output.size() < 2000);  // no message echoes a value in full
+    CHECK(r.output.find('\x1b') == std::string::npos);
     for (const auto& part : row.message_has)  // "FILE": the message names the file
       CHECK(r.output.find(part == "FILE" ? file.string() : part) != std::string::npos);
   }
