@@ -28,14 +28,14 @@ struct BilinearSpec {
   double assumed_order = 1.0;        // order taken for a two-level ladder
 };
 
-// A resolution ladder (README "Resolution ladder"): members that differ only in `key`.
+// A resolution ladder (analysis/README.md "Resolution ladder, accuracy against cost, stability"): members that differ only in `key`.
 struct LadderSpec {
   std::string name;                     // file stem under ladder/; default "ladder_<last part of key>"
   std::string key;                      // dotted scene key, e.g. "resolution.a"
   std::string spacing;                  // h from the key's value x: "1/x", "2^-x" or "x"
   std::vector<std::string> quantities;  // default_quantities() when not given
   std::vector<std::string> cases;       // only members of these cases (empty: all)
-  double assumed_order = 1.0;           // order taken for a two-level ladder (first order in 1/a, DESIGN 3.2)
+  double assumed_order = 1.0;           // order taken for a two-level ladder (first order in 1/a, docs/guide/model.md "Immersed boundary kernel")
 };
 
 // A reference value for the accuracy table: given numbers, or a ladder's extrapolation.

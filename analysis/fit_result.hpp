@@ -1,7 +1,7 @@
 #pragma once
 // The outcome of one least-squares fit: parameters with standard errors and
 // 95 % intervals, goodness of fit, and the data it was made on -- or, when the
-// fit could not be made, only the reason (DESIGN 4: "never prints a number").
+// fit could not be made, only the reason (analysis/README.md "What each fit fits").
 #include <cstddef>
 #include <string>
 #include <vector>

@@ -15,7 +15,7 @@ namespace {
 
 constexpr double k_nan = std::numeric_limits<double>::quiet_NaN();
 
-// The fitted times, in the order of the README's fit table.
+// The fitted times, in the order of analysis/README.md "What each fit fits".
 constexpr const char* k_times[] = {"response.k_tau_s",   "recovery.k_tau_r",
                                    "two_phase.k_tau_R1", "two_phase.k_tau_R2",
                                    "double_exponential.k_tau_R1", "double_exponential.k_tau_R2",

@@ -14,7 +14,7 @@ struct LadderLevel {
 };
 
 // Highest order the solver looks for: an observed order above it means the levels are not
-// in the asymptotic range (the IB method is first order in 1/a, DESIGN 3.2), not a real p.
+// in the asymptotic range (the IB method is first order in 1/a, docs/guide/model.md "Immersed boundary kernel"), not a real p.
 inline constexpr double k_max_observed_order = 16.0;
 
 struct RichardsonResult {

@@ -15,7 +15,7 @@ namespace capsule::analysis {
 
 namespace {
 
-// Undeformed D_xy of the biconcave capsules (README "Conventions": D_xy).
+// Undeformed D_xy of the biconcave capsules (docs/conventions.md "D_xy").
 constexpr double k_D_biconcave_2d = 0.812;
 constexpr double k_D_biconcave_3d = 0.51;
 
@@ -902,7 +902,7 @@ std::vector<ShearMember> shear_members(const ThesisResults& res, const ThesisCam
 // Power law (case K, n = 0.64) paired with a Kelvin-Voigt member (cases kv, kv_physical) of the
 // same physical surface viscosity: K a mu_a at gamma = k against eta, or eta/3 where the member
 // runs the dissertation's reading of (63) (conventions.sls_viscosity). The text pairs mu_s = 1000 K,
-// surface viscosities it took as equal; its K carries its own lattice units (README "Power-law K").
+// surface viscosities it took as equal; its K carries its own lattice units (docs/conventions.md "Power-law K").
 struct Pair {
   double K = k_nan;
   const ShearMember *power = nullptr, *kv = nullptr;

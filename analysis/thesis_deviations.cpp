@@ -3,8 +3,8 @@
 namespace capsule::analysis {
 
 const std::vector<KnownDeviation>& known_deviations() {
-  // Each entry summarises a README section ("Conventions", "Fluid", "The 2D capsule",
-  // "The 3D capsule"); keep them in step when a convention changes.
+  // Each entry summarises a section of docs/conventions.md or docs/guide/model.md (Fluid, The
+  // 2D capsule, The 3D capsule, Relaxation time); keep them in step when a convention changes.
   static const std::vector<KnownDeviation> d = {
       {"Fluid: s_eps",
        "The text fixes the MRT energy-square rate s_eps at 1.64 (D2Q9) / 1.8 (D3Q19). With s_e tied to s_nu that set "

@@ -1,7 +1,7 @@
 #pragma once
 // "Known causes of disagreement": where the toolkit departs from the dissertation on
 // purpose, or measures something the text does not control, with the claims each one
-// moves. Maintained here, in one place: THESIS.md prints it, README points to it.
+// moves. Maintained here, in one place: THESIS.md prints it, docs/findings/dissertation_comparison.md points to it.
 #include <string>
 #include <vector>
 

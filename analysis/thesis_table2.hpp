@@ -12,7 +12,7 @@
 
 namespace capsule::analysis {
 
-// Which campaign regenerates which (Ca, E_b) ensemble of Table 2 (DESIGN 5).
+// Which campaign regenerates which (Ca, E_b) ensemble of Table 2 (docs/guide/campaigns.md "The shipped campaigns").
 struct Table2Ensemble {
   double Ca = 0.0, E_b = 0.0;
   std::string campaign;

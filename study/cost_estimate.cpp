@@ -11,7 +11,7 @@ namespace capsule::study {
 
 namespace {
 
-// Calibration (one thread, the 2-core development machine, README "Performance"):
+// Calibration (one thread, the 2-core development machine, docs/findings/performance.md "The fluid kernel before the rewrite"):
 // `capsule bench lbm`: D2Q9 175 MLUPS while the lattice fits in cache (160 x 120), 96 MLUPS
 // beyond (2048 x 2048); D3Q19 27.5 MLUPS.
 constexpr double kD2Q9CachedRate = 175e6, kD2Q9Rate = 96e6, kD3Q19Rate = 27.5e6;

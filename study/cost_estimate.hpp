@@ -1,5 +1,5 @@
 #pragma once
-// A member's cost before it runs (README "Time and memory estimates"): lattice nodes, time
+// A member's cost before it runs (docs/guide/running.md "Time and memory estimates"): lattice nodes, time
 // steps, and wall seconds on this kind of machine from a cost model calibrated by measurement:
 //   seconds = steps x (fluid nodes / fluid rate + membrane cost per step) / threads (fluid only)
 // with the fluid rate in lattice updates per second for the lattice (D2Q9 in or out of cache,

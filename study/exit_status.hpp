@@ -1,5 +1,5 @@
 #pragma once
-// The exit status of `study` (README "Exit status", `study --help`):
+// The exit status of `study` (docs/guide/campaigns.md "Exit status", `study --help`):
 //   0  done; for run, status and report: every member complete
 //   1  the tool itself failed (a file could not be written, GNU Parallel missing, ...)
 //   2  bad campaign file or command line (nothing was run)

@@ -1,7 +1,7 @@
 #pragma once
 // The cost model corrected by what this machine measured: the members of a campaign that have
 // run record wall_seconds, steps and threads; their sum against the model's seconds for the
-// same steps gives one correction factor per dimension (README "Time and memory estimates").
+// same steps gives one correction factor per dimension (docs/guide/running.md "Time and memory estimates").
 #include "study/campaign_survey.hpp"
 #include "study/cost_estimate.hpp"
 

@@ -12,7 +12,7 @@
 
 namespace capsule::study {
 
-// Thrown when another run holds the lock; `study` exits 5 (README "Exit status").
+// Thrown when another run holds the lock; `study` exits 5 (docs/guide/campaigns.md "Exit status").
 struct RunStillGoing : std::runtime_error {
   using std::runtime_error::runtime_error;
 };

@@ -11,7 +11,7 @@
 #include "solver/scene/scene.hpp"
 
 namespace {
-// README "Exit status"; run_member() and `check` return these.
+// docs/guide/scenes.md "Exit status"; run_member() and `check` return these.
 const char* const exit_codes =
     "Exit status: 0 complete (check: the scene is valid), 1 the solver failed or a file could not be\n"
     "written, 2 bad scene, output path or command line (nothing was run), 3 the member ended unstable.";

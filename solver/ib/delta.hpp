@@ -7,16 +7,16 @@
 //       (5 - 2|r| - sqrt(-7 + 12|r| - 4 r^2)) / 8      for 1 <= |r| <= 2.
 // Both have the same support and cost.
 //
-// Properties (tested in tests/membrane2d/test_ib_delta.cpp):
+// Properties (tested in tests/membrane2d/test_ib.cpp):
 //  - partition of unity: sum_j delta(x - x_j) = 1 exactly for every offset;
 //  - the first moment sum_j (x - x_j) delta(x - x_j) is NOT zero for the cosine kernel
 //    (unlike Peskin's 4-point kernel): it equals first_moment_error(r) below, zero when
 //    the point sits on a node or midway between two, and at most 0.0209 dx otherwise.
 //    So interpolating a linear field u = g x is exact only at those offsets and off by
-//    g * first_moment_error elsewhere (DESIGN 3.2 expects zero; the kernel (18) does not give it).
+//    g * first_moment_error elsewhere (docs/guide/model.md "Immersed boundary kernel" asks for zero; the kernel (18) does not give it).
 //  - peskin4 has partition of unity AND zero first moment for every offset (linear fields are
 //    interpolated exactly) and sum of squared weights = 3/8 for every offset.
-// Why the choice matters (measured, README "Immersed boundary kernel"): with the cosine
+// Why the choice matters (measured, docs/guide/model.md "Immersed boundary kernel"): with the cosine
 // kernel, a capsule in linear shear gets node velocities that err by k * first_moment_error,
 // a pattern locked to the lattice; the 2D membrane (node spacing 0.45 dx at a = 10) turns it
 // into curvature noise of order 1/a within kt ~ 0.1, which the fluid cannot damp (it is below

@@ -1,5 +1,5 @@
 #pragma once
-// The Eulerian lattice as the immersed boundary sees it (CONTRACTS.md "Lattice units"):
+// The Eulerian lattice as the immersed boundary sees it (docs/CONTRACTS.md "Lattice units and geometry"):
 // node (i, j, k) sits at (i + 1/2, j + 1/2, k + 1/2), dx = 1; periodic in x (and z),
 // walls at y = 0 and y = ny. Linear index i + nx (j + ny k): x runs fastest, as in
 // capsule::lbm::Fluid::index.

@@ -10,7 +10,7 @@
 //   (101) gamma = sqrt(2 tr D^2);
 //   (102) mu_mem = K a mu_a (gamma / k)^(n - 1), a surface viscosity (viscosity x length) like
 //         the Kelvin-Voigt mu_s = eta a mu_a (36): K is dimensionless, on the scale of eta, and
-//         gamma is measured in units of the shear rate k (DESIGN 3.4; the text quotes K in
+//         gamma is measured in units of the shear rate k (docs/conventions.md "Power-law K"; the text quotes K in
 //         multiples of mu_a without the units of gamma, and reports that its K and mu_s =
 //         1000 K behave alike, so its K = 0.01 is K = 10 here). gamma / k is floored at
 //         `gamma_floor` (default 0.01): a rigid-body part of the motion, or the points of the

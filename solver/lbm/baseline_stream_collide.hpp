@@ -1,9 +1,10 @@
 #pragma once
-// BASELINE: the fused kernel as it was before issue 10 (full moment transform of
+// BASELINE: the fused kernel as it was before the kernel rewrite of 2026-12-01 (full moment transform of
 // collision.hpp, unshifted double populations, rho/u written and F read at every node).
 // Fluid no longer runs it; `capsule bench lbm` times it beside the new kernel (the
-// `baseline` rows, same process, same machine) and the tests use it as the two-lattice
-// reference (tests/lbm/kernel_equivalence_test.cpp). Namespace lbm::baseline.
+// `baseline` rows, same process, same machine); no test runs it (the kernels Fluid runs are
+// tested against each other and against the reference MRT collision:
+// tests/lbm/in_place_test.cpp, tests/lbm/split_collision_test.cpp). Namespace lbm::baseline.
 //
 // One fused pass: collide every node (collision.hpp) and push the post-collision
 // populations to their neighbours in the second lattice (periodic in x and z,

@@ -92,7 +92,7 @@ Fluid<L>::Array<T>& Fluid<L>::next() {
 }
 
 // Single precision collides in float: measured faster than double arithmetic on float
-// storage (README "Performance") and, on shifted populations, as accurate as the tests ask.
+// storage (docs/findings/performance.md "Single against double") and, on shifted populations, as accurate as the tests ask.
 template <class L>
 template <class T>
 void Fluid<L>::step_in() {

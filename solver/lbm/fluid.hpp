@@ -1,5 +1,5 @@
 #pragma once
-// The lattice Boltzmann fluid (Sec. 2.1, DESIGN 3.1): MRT collision (2) with the
+// The lattice Boltzmann fluid (Sec. 2.1, docs/guide/model.md "Fluid"): MRT collision (2) with the
 // body-force scheme (22)-(23), half-way bounce-back moving walls, periodic in x and z.
 //
 // Geometry and units (docs/CONTRACTS.md): dx = dt = 1, rho0 = 1.

@@ -11,7 +11,7 @@
 
 namespace capsule::lbm {
 
-// Which relaxation rate a moment uses (DESIGN 3.1).
+// Which relaxation rate a moment uses (docs/guide/model.md "Fluid").
 enum class RateGroup {
   conserved,  // rho, j: not relaxed
   shear,      // stress moments: s_nu, nu = (1/s_nu - 1/2)/3  (8), (13)

@@ -1,7 +1,7 @@
 #pragma once
 // The MRT moment basis of a lattice L, built at compile time:
 //  - M (6)/(11): M[k][i] = P_k(c_i), the k-th velocity polynomial at c_i
-//    (the damaged matrix (11) is replaced by d'Humieres et al. 2002, DESIGN 3.1);
+//    (the damaged matrix (11) is replaced by d'Humieres et al. 2002, docs/guide/model.md "Fluid");
 //  - the squared row norms |M_k|^2 (rows are orthogonal, so M^-1 = M^T diag(1/|M_k|^2));
 //  - opposite directions and the parity of each moment (even moments depend only on
 //    f_i + f_opp(i), odd ones only on f_i - f_opp(i)), used by the collision kernel;

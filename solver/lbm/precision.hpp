@@ -3,7 +3,7 @@
 //  - double: populations stored and collided in double (default);
 //  - single: populations stored as float, shifted by the rest equilibrium (f_i - w_i, so the
 //    small deviations of a Stokes flow keep their digits), collided in float arithmetic
-//    (chosen by measurement: README "Performance"). rho, u and the force stay double arrays
+//    (chosen by measurement: docs/findings/performance.md "Single against double"). rho, u and the force stay double arrays
 //    in both, so the immersed-boundary code is the same.
 #include <stdexcept>
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// Relaxation rates of the MRT collision (DESIGN 3.1, Sec. 2.1).
+// Relaxation rates of the MRT collision (docs/guide/model.md "Fluid", Sec. 2.1).
 //  - shear moments: nu = (1/s_nu - 1/2)/3  (8), (13);
 //  - heat-flux moments: (9) in D2Q9, s_q = s_nu in D3Q19;
 //  - energy e: the bulk viscosity is tied to the shear viscosity by s_e = s_nu,

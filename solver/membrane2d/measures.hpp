@@ -1,5 +1,5 @@
 #pragma once
-// Shape measures of the 2D capsule written every output interval (DESIGN 3.5).
+// Shape measures of the 2D capsule written every output interval (docs/guide/member-files.md "2D series").
 // xy: closed polygon, flat (x0, y0, x1, y1, ...), counter-clockwise.
 #include <vector>
 

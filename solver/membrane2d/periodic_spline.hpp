@@ -1,5 +1,5 @@
 #pragma once
-// Periodic parametric cubic spline through the closed membrane polygon (Sec. 2.4, DESIGN 3.3):
+// Periodic parametric cubic spline through the closed membrane polygon (Sec. 2.4, docs/guide/model.md "The 2D capsule"):
 // x(s) and y(s) with s the cumulative chord length, C2 and periodic. At every node it gives
 // the unit tangent and the curvature kappa = (x' y'' - y' x'') / (x'^2 + y'^2)^(3/2)
 // (the parametric form of (33), whose F''' should read F''). Counter-clockwise nodes give

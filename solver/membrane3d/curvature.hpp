@@ -5,8 +5,8 @@
 // Sign convention (fixed once): the normal points OUTWARD and the mean curvature
 // kappa = (kappa_1 + kappa_2)/2 is POSITIVE on a sphere (kappa = 1/R, kappa_g = 1/R^2).
 // The fitted height z = a x^2 + b xy + c y^2 + d x + e y is measured along the outward
-// normal, so a sphere curves to negative z; (79) as printed (and the "bdc" misprint, DESIGN
-// 3.4) gives the mean curvature with the opposite sign, hence
+// normal, so a sphere curves to negative z; (79) as printed (and the "bdc" misprint, solver/membrane3d/README.md
+// "Conventions") gives the mean curvature with the opposite sign, hence
 //   kappa = -(a (1 + e^2) + c (1 + d^2) - b d e) / (1 + d^2 + e^2)^(3/2).
 #include <vector>
 

@@ -18,7 +18,7 @@
 
 namespace capsule::membrane3d {
 
-// Standard linear solid (DESIGN 3.4): a Maxwell element (modulus E_m = G E_s, relaxation time
+// Standard linear solid (docs/conventions.md "Membrane viscosity in 3D"): a Maxwell element (modulus E_m = G E_s, relaxation time
 // tau_m = mu_s / E_m -- the text's "tau_m = E_m / mu_s" has the wrong dimension) in parallel
 // with the elastic law. Its tension is the relaxation-weighted history of the Maxwell
 // element's instantaneous elastic tension S_m(C) (the law with E_s -> E_m):

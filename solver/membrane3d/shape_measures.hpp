@@ -1,5 +1,5 @@
 #pragma once
-// Shape measures written every output interval (DESIGN 3.5): the Taylor deformation of the
+// Shape measures written every output interval (docs/guide/member-files.md "3D series"): the Taylor deformation of the
 // inertia-equivalent ellipsoid (37)-(38), the extent-based deformation of the shear-plane
 // section, inclination, and mesh health.
 #include "solver/membrane3d/mesh.hpp"

@@ -11,7 +11,7 @@
 //   curvature  the curvature fit of the bending force; bending: the bending force itself
 // "membrane %" is (coupling + elastic + curvature + bending) / step: issue 10 asks for <= 15 %.
 // The same process runs every row, so their ratios survive a busy machine; the figures in
-// README were taken on an idle one.
+// docs/findings/performance.md "The reference 3D member" were taken on an idle one.
 #include "solver/run/bench_member3d.hpp"
 
 #include <omp.h>

@@ -1,5 +1,5 @@
 #pragma once
-// Restart points inside a member (README "Checkpoints"). While `capsule SCENE -o OUT` runs it
+// Restart points inside a member (docs/guide/running.md "Checkpoints"). While `capsule SCENE -o OUT` runs it
 // writes OUT.restart (HDF5, solver/io/state_archive.hpp) every `--checkpoint-seconds` of wall
 // time, under a temporary name and then renamed, holding everything the rest of the run
 // reads: the fluid (Fluid::export_state), the membrane and its memories, the protocol, the

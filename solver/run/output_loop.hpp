@@ -25,7 +25,7 @@
 
 namespace capsule {
 
-// The lattice-unit choices of a member (README "Member files").
+// The lattice-unit choices of a member (docs/guide/member-files.md "Layout").
 inline void record_units(io::MemberWriter& out, const Scene& scene, const Units& u) {
   out.set_attribute("tau", u.tau);
   out.set_attribute("tau_rule", scene.tau > 0 ? std::string("from the scene") : std::string("choose_tau (README)"));

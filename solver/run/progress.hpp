@@ -1,5 +1,5 @@
 #pragma once
-// Progress of a running member (README "Progress"): every `interval` seconds of wall time a
+// Progress of a running member (docs/guide/running.md "Progress"): every `interval` seconds of wall time a
 // line on stderr (unless quiet)
 //   capsule: shear  kt 1.250 / 3.000  D_xy 0.1834  412 steps/s  7.9 MLUPS  ETA 5m12s (end of shear)
 // and the same facts as JSON in <member>.progress (written atomically), which `study` reads to

@@ -1,5 +1,5 @@
 #pragma once
-// The protocol of a member (DESIGN 3.6): shear until a condition, then recover until
+// The protocol of a member (docs/guide/scenes.md "Keys"): shear until a condition, then recover until
 // a condition. Dimension-independent: the driver feeds one observation per output
 // interval and asks how fast the walls move. It also keeps the markers the fits need
 // (Sec. 3.1 and 4.1.1): t_max/D_max (largest D_xy under shear), t_stop/D_stop (shear

@@ -1,4 +1,4 @@
-// run_member(): one scene -> one member file (CONTRACTS.md "Member file", "Binaries").
+// run_member(): one scene -> one member file (docs/CONTRACTS.md "Member file", "Binaries").
 #include "solver/run/run_member.hpp"
 
 #include <omp.h>

@@ -13,7 +13,7 @@ struct RunOptions {
   std::string member_id;  // recorded in the member file; study passes the hash
   bool quiet = false;     // no progress lines (the progress file is still written)
   double progress_seconds = 5;
-  CheckpointPolicy checkpoint;  // restart points (README "Checkpoints")
+  CheckpointPolicy checkpoint;  // restart points (docs/guide/running.md "Checkpoints")
 };
 
 // Exit codes: 0 complete, 3 unstable, 2 bad scene or usage, 1 other failure.

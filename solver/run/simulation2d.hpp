@@ -7,7 +7,7 @@
 // The fluid starts in the linear Couette flow u = k (y - H/2) shear_factor(0) (so the capsule
 // feels the shear from step 0); walls move at -+ k H/2 shear_factor(kt).
 //
-// Series columns written every output interval (README "2D member series"):
+// Series columns written every output interval (docs/guide/member-files.md "2D series"):
 //   kt              time in units of 1/k
 //   D_xy            Taylor deformation (37), chords through the centroid (measures.hpp)
 //   theta           major-axis inclination, rad, in (-pi/2, pi/2]
@@ -49,7 +49,7 @@ class Simulation2D {
   // One lattice step with the walls at -+ k H/2 * shear_factor.
   void step(double shear_factor);
 
-  // The measures of DESIGN 3.5 at the current state (one output row), and the tracked phase
+  // The measures of docs/guide/member-files.md "2D series" at the current state (one output row), and the tracked phase
   // angle (89) of node 0 wrapped into (-pi, pi]. Call once per output interval (it
   // follows theta and beta continuously between calls).
   std::map<std::string, double> row();
@@ -64,7 +64,7 @@ class Simulation2D {
   // Kinematic viscosity of the fluid node nearest to (x, y) (lattice units).
   double viscosity_at(double x, double y) const;
 
-  // Health bounds (README): a segment stretched beyond max_stretch or compressed below
+  // Health bounds (docs/guide/member-files.md "Health checks"): a segment stretched beyond max_stretch or compressed below
   // min_stretch, the enclosed area drifting by more than max_area_drift, or a lattice speed
   // above max_speed (Mach ~ 0.35, where the LBM is no longer a Navier-Stokes solver).
   // The compression bound is not 1/max_stretch: a bending-free Hookean membrane (30) really

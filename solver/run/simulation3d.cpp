@@ -10,7 +10,7 @@
 // The fluid starts in the linear Couette flow u = k (y - H/2) shear_factor(0); the walls move
 // at -+ k H/2 shear_factor(kt).
 //
-// Conventions (README "3D member"):
+// Conventions (solver/membrane3d/README.md "Conventions"):
 //  - E_B = E_b a^2 E_s. (35) prints E_B/(a E_s), which has the dimension of a length; the text
 //    works with a = 1, where both agree, and this form keeps the physics independent of the
 //    resolution a (the same choice as the 2D driver). c0 is given in units of 1/a.
@@ -64,8 +64,8 @@ static_assert(sizeof(m3::Vec3) == 3 * sizeof(double), "membrane positions are us
 // whose law is tau_1 = E_s/(3 l1 l2)(l1^2 - 1/(l1 l2)^2), so G_s = E_s/3 -- the same as the
 // text's own SLS (63), g_0 = E_s/3 -- and the text validates against their D(Ca) at equal Ca
 // (Fig. 7). (56) and (58)-(59) as printed have G_s = E_s; with that reading a sphere at
-// Ca = 0.05 deforms to D = 0.12 at a = 5 where Ramanujan and Pozrikidis have 0.26 (README
-// "3D member", measured). Skalak: (60)-(61) as printed, G_s = E_s (Skalak et al., Yazdani and
+// Ca = 0.05 deforms to D = 0.12 at a = 5 where Ramanujan and Pozrikidis have 0.26 (solver/membrane3d/README.md
+// "Conventions", measured). Skalak: (60)-(61) as printed, G_s = E_s (Skalak et al., Yazdani and
 // Bagchi).
 double shear_modulus_3d(const Scene& s, const Units& u) { return s.law == "neo-hookean" ? u.E_s / 3.0 : u.E_s; }
 
@@ -148,7 +148,7 @@ class Simulation3D {
   // The next step writes u and rho everywhere (the output loop calls this before a row).
   void full_fields_next_step() { full_fields_next_ = true; }
 
-  // One output row (DESIGN 3.5) and the phase angles (91)-(92) of the five tracked vertices.
+  // One output row (docs/guide/member-files.md "3D series") and the phase angles (91)-(92) of the five tracked vertices.
   std::map<std::string, double> row(std::vector<double>& beta) {
     const auto d = m3::inertia_deformation(mesh_);
     beta = phase_.update(mesh_, d.centroid, d.theta);
@@ -277,7 +277,7 @@ class Simulation3D {
     return xyz;
   }
 
-  // Health bounds (README "3D member"): the enclosed volume drifting by more than 5 % (the IB
+  // Health bounds (docs/guide/member-files.md "Health checks"): the enclosed volume drifting by more than 5 % (the IB
   // leaks a fraction of a percent per unit kt at a = 10), a triangle degenerating below
   // quality 0.05 (icosphere: 0.97), a lattice speed above 0.2 (Mach 0.35).
   static constexpr double max_volume_drift = 0.05;
@@ -324,7 +324,7 @@ class Simulation3D {
     shear_modulus_ = shear_modulus_3d(s, units_);
     p.law = m3::Constitutive{m3::elastic_law_from_name(s.law), shear_modulus_, s.C};
     if (s.eta > 0) {
-      // SLS (63)-(67): E_m = G E_s, tau_m = mu_s / E_m (DESIGN 3.4), mu_s = eta a mu_a (36).
+      // SLS (63)-(67): E_m = G E_s, tau_m = mu_s / E_m (docs/conventions.md "Membrane viscosity in 3D"), mu_s = eta a mu_a (36).
       if (!(s.G > 0)) throw std::invalid_argument("eta > 0 needs G = E_m/E_s > 0");
       const double E_m = s.G * shear_modulus_;  // G = E_m / E_s, in the same convention
       // The Kelvin-Voigt limit has surface viscosity E_m tau_m = mu_s ("physical"). The text's
@@ -410,7 +410,7 @@ class Simulation3D {
   double E_B_ = 0, K_v_ = 0, area0_ = 0, shear_modulus_ = 0, tau_m_ = 0;
   // IB delta (scene resolution.kernel, solver/ib/delta.hpp). Default Peskin's 4-point kernel, as
   // in 2D: the cosine kernel (18) has no zero first moment, so it interpolates a linear shear
-  // with a lattice-locked error (README "The 2D capsule").
+  // with a lattice-locked error (docs/guide/model.md "Immersed boundary kernel").
   ib::Kernel kernel_ = ib::Kernel::peskin4;
   // Time level and order of the position update (scene resolution.membrane_update,
   // solver/ib/membrane_update.hpp); U_previous_: the last step's U, adams_bashforth2 only.

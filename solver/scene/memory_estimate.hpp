@@ -1,5 +1,5 @@
 #pragma once
-// The memory a scene needs (README "Time and memory estimates"), counted from the arrays the
+// The memory a scene needs (docs/guide/running.md "Time and memory estimates"), counted from the arrays the
 // solver allocates: the fluid's two population arrays (padded rows, Fluid<L>), its force,
 // velocity and density fields, the per-node viscosity field and the contrast / power-law
 // fields when the scene has them, the membrane, and the copy of the fluid a restart point

@@ -1,5 +1,5 @@
 #pragma once
-// One scene = one member of a study (DESIGN 3.6): the capsule, the fluid, the
+// One scene = one member of a study (docs/guide/scenes.md): the capsule, the fluid, the
 // resolution, the protocol (shear, then recover) and what to write.
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -53,7 +53,7 @@ struct Scene {
   double volume_penalty = 0;   // K_v of (84), in units of E_s / a; 0 = off
   double power_law_K = 0;      // (102), dimensionless (gamma in units of k); 0 = off
   double power_law_n = 1;
-  // Readings of the dissertation that differ from the physical definitions (README
+  // Readings of the dissertation that differ from the physical definitions (docs/conventions.md
   // "Conventions"); the physical ones are the default, the text's are there so its tables
   // can be regenerated and the difference explained.
   //  sls_viscosity (3D): "physical": the Kelvin-Voigt limit of the standard linear solid has

@@ -6,7 +6,7 @@
 namespace capsule {
 
 namespace {
-// The relaxation-time rule (README "Relaxation time"). With Re = k a^2 / nu fixed, a larger
+// The relaxation-time rule (docs/guide/model.md "Relaxation time"). With Re = k a^2 / nu fixed, a larger
 // nu means fewer steps per kt (steps_per_kt = a^2 / (Re nu)), but:
 //  - accuracy: steady-state D_xy hardly depends on tau. Circle, a = 10, Ca = 0.05, E_b = 0.05,
 //    D_xy at kt = 2.75: 0.274730 / 0.274729 / 0.274740 for tau = 0.7 / 1.0 / 1.5, area drift
@@ -20,7 +20,7 @@ namespace {
 // Rule: tau = 1 (nu = 1/6), lowered until S <= 0.04 and B <= 0.12, never below 0.52.
 // Membrane viscosity is not part of the rule (mu_s / nu = eta a does not depend on tau): the
 // Kelvin-Voigt term (31) is taken implicitly in the node velocities and runs eta up to 20 at
-// a = 10 (README "The 2D capsule").
+// a = 10 (docs/guide/model.md "The 2D capsule").
 double choose_tau_2d(const Scene& scene) {
   constexpr double nu_default = 1.0 / 6.0, S_max = 0.04, B_max = 0.12, tau_min = 0.52;
   double nu = std::min(nu_default, S_max * scene.a * scene.Ca / scene.Re);
@@ -30,7 +30,7 @@ double choose_tau_2d(const Scene& scene) {
 }
 
 
-// 3D (README "The 3D capsule", relaxation time): tau = 1.5 (nu = 1/3, half the steps per kt
+// 3D (docs/guide/model.md "Relaxation time"): tau = 1.5 (nu = 1/3, half the steps per kt
 // of tau = 1) for a capsule no more viscous than its surroundings, lowered where the explicit
 // membrane coupling has not been seen stable. Measured at a = 5, level 3:
 //  - accuracy (shear to kt 3, E_b = 0): the largest deviation of D_xy(kt >= 0.5) from tau = 1
@@ -41,7 +41,7 @@ double choose_tau_2d(const Scene& scene) {
 //  - a more viscous interior (V > 1) keeps tau = 1: at V = 5, D_xy(kt = 3) is 0.2059 / 0.2183 /
 //    0.2329 for tau = 0.7 / 1 / 1.5 (the inside relaxation time 0.5 + 3 V nu is 1.5 / 3 / 5.5),
 //    a tau-dependent error of several percent that no choice of tau keeps within 0.5 % of
-//    tau = 1 (README: open accuracy question of viscosity-contrast members); V = 2: +2.0 % at 1.5.
+//    tau = 1 (docs/guide/model.md "Relaxation time": open accuracy question of viscosity-contrast members); V = 2: +2.0 % at 1.5.
 //  - stability: tau = 3 ran for Ca = 0.05 and 0.2 (S = Re nu/(a Ca) = 0.17 and 0.04); the
 //    largest bending number B = E_b a Re nu/Ca seen stable is 0.17 (a = 10, tau = 1, E_b = 0.1,
 //    Ca = 0.05). The 2D bounds (S 0.04, B 0.12) do not carry over: 3D ran stably at 4 x S.

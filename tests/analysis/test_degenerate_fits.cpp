@@ -1,4 +1,4 @@
-// Fits that cannot be made must say why and carry no number (DESIGN 4).
+// Fits that cannot be made must say why and carry no number (analysis/README.md "What each fit fits").
 #include <catch2/catch.hpp>
 
 #include <cmath>

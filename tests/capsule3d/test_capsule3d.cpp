@@ -4,7 +4,7 @@
 //
 // CI versions are short and coarse (a = 4-5 lattice nodes, mesh level 2-3, a few seconds); the
 // full validation (a = 10, level 4, to steady state) is behind the hidden tag [.validation]:
-//   tests/test_capsule3d "[.validation]"   (one thread: ~6 min per kt at a = 10, ~2.5 h in all; the
+//   build/tests/test_capsule3d "[.validation]"   (one thread: ~6 min per kt at a = 10, ~2.5 h in all; the
 //   a = 5 and a = 8 results are tabulated in solver/membrane3d/README.md)
 #include <catch2/catch.hpp>
 #include <omp.h>
@@ -108,7 +108,7 @@ TEST_CASE("neo-Hookean sphere in shear: short coarse run follows Ramanujan-Pozri
   // (+-0.005, 2.5 %) plus the coarse IB's overshoot; reading (56) with G_s = E_s instead of
   // E_s/3 gives 0.150 (-24 %) and fails.
   CHECK(std::abs(D_end - D_ref) < 0.08 * D_ref);
-  // The two measures agree for a nearly ellipsoidal shape (README): within 10 % here.
+  // The two measures agree for a nearly ellipsoidal shape (tests/data/reference/README.md): within 10 % here.
   CHECK(De.back() == Approx(D_end).epsilon(0.1));
   // Tank-treading capsule inclined between 0 and 45 degrees to the flow.
   CHECK(d.series.at("theta").back() > 0.3);
@@ -263,7 +263,7 @@ TEST_CASE("a more viscous interior (V = 5) slows the response of a sphere", "[ca
 TEST_CASE("the automatic tau runs the default member through steady shear and recovery, and V = 5, eta = 10", "[capsule3d]") {
   // CI-sized (a = 4, level 2) versions of the reference member (Ca = 0.05, E_b = 0.025, shear
   // until steady, recover until settled) and of a V = 5 and an eta = 10 member, at the solver's
-  // own tau: 1.5 for V <= 1, 1 for V > 1 (README "The 3D capsule").
+  // own tau: 1.5 for V <= 1, 1 for V > 1 (docs/guide/model.md "Relaxation time").
   std::ostringstream ref;
   ref << R"({"dim": 3, "shape": "sphere", "Ca": 0.05, "E_b": 0.025, "V": 1, "eta": 0,
       "resolution": {"a": 4, "mesh_level": 2},
@@ -292,7 +292,7 @@ TEST_CASE("validation: neo-Hookean sphere steady D_xy against Ramanujan-Pozrikid
   // is noticed: D_xy lies above the reference by 7.1 % (Ca 0.05) and 4.9 % (Ca 0.1), measured
   // with this test, and 3.3 % (Ca 0.2: mean over kt 5-6 of bench_accuracy_3d's member a = 10,
   // level 4, the window this test averages; D overshoots the plateau from kt ~ 2.5 on). The error is first
-  // order in 1/a (README "Accuracy and stability": a = 5, 10, 15 give 8.1 / 6.5 / 5.3 % at
+  // order in 1/a (solver/membrane3d/README.md "Validation": a = 5, 10, 15 give 8.1 / 6.5 / 5.3 % at
   // Ca 0.05 in another run length), so 1 or 2 % needs a resolution ladder, not one a. Margin
   // 1.5 percentage points: two measurements of the Ca 0.05 excess at a = 10 with different run
   // lengths differ by 0.6.

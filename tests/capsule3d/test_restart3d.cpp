@@ -1,4 +1,4 @@
-// Restart points inside a 3D member (README "Checkpoints"): the fluid, the membrane positions,
+// Restart points inside a 3D member (docs/guide/running.md "Checkpoints"): the fluid, the membrane positions,
 // the standard-linear-solid memory, the viscosity contrast and the power-law support survive a
 // kill, and the resumed member is bitwise the uninterrupted one.
 #include <catch2/catch.hpp>

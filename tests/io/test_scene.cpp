@@ -173,7 +173,7 @@ TEST_CASE("lattice units follow (8), (34)-(36) and Re = k a^2 / nu", "[scene]") 
   CHECK(u.nu == Approx(1.0 / 6.0));
   CHECK(u.shear_rate * s.a * s.a / u.nu == Approx(s.Re));
   CHECK(u.nu * u.shear_rate * s.a / u.E_s == Approx(s.Ca));
-  CHECK(u.E_B / (s.a * s.a * u.E_s) == Approx(s.E_b));  // dimensionless form, README "Conventions"
+  CHECK(u.E_B / (s.a * s.a * u.E_s) == Approx(s.E_b));  // dimensionless form, docs/conventions.md "E_b"
   CHECK_THROWS(capsule::units_for(s, 0.5));
 }
 

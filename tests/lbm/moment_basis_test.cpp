@@ -1,4 +1,4 @@
-// The MRT matrices built from the velocity polynomials (DESIGN 3.1): orthogonal rows,
+// The MRT matrices built from the velocity polynomials (docs/guide/model.md "Fluid"): orthogonal rows,
 // M M^-1 = I, D2Q9 reproduces (6), and the equilibrium moments conserve rho and j.
 #include <Eigen/Dense>
 #include <array>

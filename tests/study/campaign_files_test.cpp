@@ -27,7 +27,7 @@ TEST_CASE("every campaign file plans without error", "[study]") {
     CHECK(s.campaign.name == entry.path().stem().string());  // results/<name> matches the file name
     for (const auto& m : s.members) CHECK(estimate_cost(m.scene).nodes > 0);
   }
-  CHECK(files >= 25);  // demo, the 18 campaigns of DESIGN section 5, precision_double/single (issue 10), 4 accuracy/stability benches (issue 11)
+  CHECK(files >= 25);  // demo, the 18 dissertation campaigns (docs/guide/campaigns.md "The shipped campaigns"), precision_double/single (issue 10), 4 accuracy/stability benches (issue 11)
   CHECK_FALSE(fs::exists(results / "demo"));  // planning wrote nothing
   fs::remove_all(results);
 }

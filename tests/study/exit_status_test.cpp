@@ -1,4 +1,4 @@
-// The exit status of `study` (README "Exit status"): command-line errors exit 2 (not
+// The exit status of `study` (docs/guide/campaigns.md "Exit status"): command-line errors exit 2 (not
 // CLI11's 104-109), status and report say with 3 / 4 that members failed or are missing,
 // and `study status --json` gives scripts the same facts.
 #include <catch2/catch.hpp>

@@ -22,7 +22,7 @@ TEST_CASE("failed and unstable members do not stop the others", "[study]") {
 
   const auto run = testing::run_study({"run", "c.json", "--jobs", "2", "--threads", "1"}, dir);
   INFO(run.output);
-  CHECK(run.exit_code == 3);  // not every member completed (README "Exit status")
+  CHECK(run.exit_code == 3);  // not every member completed (docs/guide/campaigns.md "Exit status")
 
   const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
   REQUIRE(s.members.size() == 3);

@@ -1,4 +1,4 @@
-// Running members, progress and restart points seen from `study` (README "Progress",
+// Running members, progress and restart points seen from `study` (docs/guide/running.md "Progress",
 // "Checkpoints", "Time and memory estimates").
 #include <catch2/catch.hpp>
 #include <unistd.h>

@@ -15,7 +15,7 @@ void write_text(const std::filesystem::path& path, const std::string& text);
 std::string read_text(const std::filesystem::path& path);
 
 std::filesystem::path study_binary();
-std::filesystem::path capsule_binary();  // $CAPSULE_BIN if set, else the build's solver/capsule
+std::filesystem::path capsule_binary();  // $CAPSULE_BIN if set, else <build>/solver/capsule
 
 struct CommandResult {
   int exit_code = -1;
