@@ -16,6 +16,7 @@
 #include <unistd.h>
 #include <functional>
 #include <map>
+#include <set>
 #include <thread>
 #include <vector>
 
@@ -102,8 +103,15 @@ void print_status(const CampaignSurvey& survey, std::ostream& out) {
     if (c.state == MemberState::complete || c.state == MemberState::fresh) continue;
     out << "  [" << state_name(c.state) << "] " << survey.members[i].dir_name() << ": " << c.reason << "\n";
   }
-  if (survey.count(MemberState::interrupted) + survey.count(MemberState::fresh) + survey.count(MemberState::failed) > 0)
-    out << "  (`study run` again runs what is not complete; complete members are kept)\n";
+  if (!survey.note.empty()) out << "  (" << survey.note << ")\n";
+  const bool exported = fs::exists(survey.layout.slurm_dir() / "export.json");
+  if (survey.count(MemberState::interrupted) + survey.count(MemberState::fresh) + survey.count(MemberState::failed) > 0) {
+    if (exported)
+      out << "  (exported for Slurm: `study export --slurm` again, then `sh " << (survey.layout.slurm_dir() / "submit.sh").string()
+          << "`, submits what is neither complete nor queued; `study run` runs it here instead)\n";
+    else
+      out << "  (`study run` again runs what is not complete; complete members are kept)\n";
+  }
   if (survey.count(MemberState::unreadable) > 0)
     out << "  (an unreadable member file is never deleted or run over: free it, or move it aside to run the member again)\n";
   if (survey.count(MemberState::unstable) + survey.count(MemberState::stopped) > 0)
@@ -199,6 +207,7 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
   if (request.allow_dirty && is_uncommitted_version(build::code_version)) record["allow_dirty"] = true;
 
   RunOutcome outcome;
+  std::set<std::string> refused_members;  // members handed to a host that could not be reached
   if (!to_run.empty()) {
     const Concurrency conc =
         choose_concurrency(usable_cores(), static_cast<int>(to_run.size()), any_3d, request.jobs, request.threads);
@@ -213,7 +222,8 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
       job_list += p.dir.string() + "\n";
     }
     write_file_atomically(survey.layout.jobs_file(), job_list);
-    write_member_wrapper(survey.layout.wrapper(), capsule_binary, survey.campaign.name);
+    write_member_wrapper(survey.layout.wrapper(),
+                         {survey.campaign.name, own_executable(), capsule_binary, request.checkpoint_seconds});
     write_file_atomically(survey.layout.run_json(), record.dump(2) + "\n");
 
     // No --halt: a failed member never stops the others. The command template holds no user
@@ -224,10 +234,16 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
     // "+joblog" appends: the joblog keeps every run's rows.
     std::string joblog = "+";  // append(): GCC 12 -O3 reports a false -Wrestrict on "literal" + string
     joblog.append(survey.layout.joblog().string());
-    std::vector<std::string> argv{"parallel", "--will-cite", "--joblog", joblog, "--jobs", std::to_string(conc.jobs)};
+    std::vector<std::string> argv{"parallel", "--will-cite", "--joblog", joblog};
+    // With a hosts file, each line's "N/host" says how many members that host takes (GNU
+    // Parallel asks a host without N for its cores): no global --jobs unless the user gave -j.
+    if (request.hosts_file.empty() || request.jobs > 0) argv.insert(argv.end(), {"--jobs", std::to_string(conc.jobs)});
     if (!request.hosts_file.empty()) {
       argv.insert(argv.end(), {"--sshloginfile", fs::absolute(request.hosts_file).string()});
       if (!request.ssh_command.empty()) argv.insert(argv.end(), {"--ssh", request.ssh_command});
+      // A member whose start failed (ssh's 255 from a host that cannot be reached; the wrapper
+      // itself returns 0 whatever the member's end) is tried again on another host.
+      argv.insert(argv.end(), {"--retries", std::to_string(request.retries)});
     }
     argv.insert(argv.end(), {"--arg-file", survey.layout.jobs_file().string(), "-q",
                              "{}/../../" + survey.layout.wrapper().filename().string(), "{}",
@@ -267,10 +283,11 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
       out << "study: host " << host << " could not be reached (exit 255) for " << members.size() << " member"
           << (members.size() == 1 ? "" : "s") << ":";
       for (const auto& m : members) out << " " << m;
-      out << "\n";
+      out << " (each tried again on another host, up to --retries " << request.retries << ")\n";
       record["unreachable_hosts"][host] = members;
-      outcome.tool_failed = true;
     }
+    refused_members.clear();
+    for (const auto& [host, members] : refused) refused_members.insert(members.begin(), members.end());
   } else {
     // Finished, or kept as they are (running elsewhere, unreadable, unstable, stopped): the
     // summary below says which.
@@ -287,6 +304,12 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
     out << "wall " << outcome.wall_seconds << " s for " << outcome.member_seconds
         << " s of member run time (concurrency " << (outcome.wall_seconds > 0 ? outcome.member_seconds / outcome.wall_seconds : 0)
         << ")\n";
+  // A member no host could be reached for is the tool's failure (exit 1), not the member's.
+  for (std::size_t i = 0; i < survey.members.size(); ++i)
+    if (refused_members.count(survey.members[i].dir_name()) && survey.conditions[i].state != MemberState::complete) {
+      out << "study: " << survey.members[i].dir_name() << " did not run: no host it was given could be reached\n";
+      outcome.tool_failed = true;
+    }
   outcome.exit_code = outcome.tool_failed ? exit_failure : members_exit_code(survey);
 
   record["finished"] = utc_now_iso8601();

@@ -20,6 +20,8 @@ struct RunRequest {
   int threads = 0;               // 0: chosen
   std::string hosts_file;        // GNU Parallel --sshloginfile (shared filesystem assumed)
   std::string ssh_command;       // GNU Parallel --ssh (default: ssh)
+  int retries = 3;               // GNU Parallel --retries with --hosts: a member that failed to start goes to another host
+  double checkpoint_seconds = 300;  // capsule --checkpoint-seconds: wall seconds between restart points
   bool allow_dirty = false;      // run from a build whose sources differ from every commit (provenance.hpp)
   bool rerun_unstable = false;   // also rerun members whose file says unstable
   bool rerun_stopped = false;    // also rerun members whose file says stopped (a configuration the solver refused)

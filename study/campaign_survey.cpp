@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "study/campaign_owner.hpp"
+#include "study/slurm_queue.hpp"
 
 namespace capsule::study {
 
@@ -23,7 +24,16 @@ CampaignSurvey survey_campaign(const std::string& campaign_file, const fs::path&
   std::vector<MemberCondition> conditions;
   conditions.reserve(members.size());
   for (const auto& m : members) conditions.push_back(inspect_member(layout.member(m), m.id));
-  return CampaignSurvey{std::move(campaign), std::move(members), std::move(layout), std::move(conditions)};
+  // Members whose Slurm task waits in the queue (after an export): not new, so neither a
+  // re-export nor `study run` starts them a second time.
+  const SlurmQueue queue = slurm_queue(layout);
+  for (std::size_t i = 0; i < members.size(); ++i)
+    if (const auto it = queue.queued.find(members[i].dir_name()); it != queue.queued.end())
+      if (const MemberState st = conditions[i].state;
+          st == MemberState::fresh || st == MemberState::interrupted || st == MemberState::failed)
+        conditions[i] = MemberCondition(MemberState::queued, "waiting in Slurm's queue: " + it->second);
+  CampaignSurvey survey{std::move(campaign), std::move(members), std::move(layout), std::move(conditions), queue.note};
+  return survey;
 }
 
 std::vector<std::string> members_in_progress(const CampaignSurvey& survey) {

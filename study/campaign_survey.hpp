@@ -17,6 +17,7 @@ struct CampaignSurvey {
   std::vector<Member> members;
   ResultsLayout layout;
   std::vector<MemberCondition> conditions;  // one per member
+  std::string note;                         // what could not be known (squeue failed), "" when all was
 
   std::size_t count(MemberState state) const;
 };

@@ -15,6 +15,9 @@
 
 #include "solver/io/member_file.hpp"
 #include "study/duration_text.hpp"
+#include "study/member_lock.hpp"
+#include "study/process_alive.hpp"
+#include "study/run_record.hpp"
 
 namespace capsule::study {
 
@@ -36,30 +39,11 @@ std::string exit_meaning(int code) {
     case 1: return "solver failure";
     case 2: return "bad scene or usage";
     case 3: return "unstable";
+    case 4: return "stopped by a signal after its restart point";
     case 126: return "capsule binary not executable";
     case 127: return "capsule binary not found";
     default: return code > 128 ? "killed by signal " + std::to_string(code - 128) : "exit status " + std::to_string(code);
   }
-}
-
-std::string this_host() {
-  char name[256] = {};
-  if (::gethostname(name, sizeof name - 1) != 0) return "unknown";
-  return name;
-}
-
-// A zombie is dead: a killed capsule whose parent died too may stay one for good where PID 1
-// does not reap (containers), and kill(pid, 0) still succeeds on it.
-bool process_alive(long pid) {
-  if (pid <= 0) return false;
-  if (::kill(static_cast<pid_t>(pid), 0) != 0 && errno != EPERM) return false;
-  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
-  std::string line;
-  if (!std::getline(stat, line)) return true;  // no /proc: trust kill()
-  const auto close = line.rfind(')');
-  if (close == std::string::npos || close + 2 >= line.size()) return true;
-  const char state = line[close + 2];
-  return state != 'Z' && state != 'X';
 }
 
 double age_seconds(const fs::path& file) {
@@ -81,6 +65,7 @@ const char* state_name(MemberState state) {
     case MemberState::stopped: return "stopped";
     case MemberState::failed: return "failed";
     case MemberState::unreadable: return "unreadable";
+    case MemberState::queued: return "queued";
   }
   return "?";
 }
@@ -111,7 +96,12 @@ MemberCondition inspect_member(const MemberPaths& paths, const std::string& expe
     if (s.status.rfind("stopped", 0) == 0) return {MemberState::stopped, s.status};
     return {MemberState::failed, "member file has status \"" + s.status + "\""};
   }
-  if (fs::exists(paths.exit_status, ec)) {
+  // A live owner of the member's lock (study run-member: a local run, an SSH host, a Slurm task)
+  // runs it now, whatever an earlier attempt left.
+  const auto owner = live_lock_owner(paths.dir);
+  if (owner && !fs::exists(paths.partial, ec) && !fs::exists(paths.restart, ec))
+    return {MemberState::running, "starting on " + owner->host + " (pid " + std::to_string(owner->pid) + ")"};
+  if (!owner && fs::exists(paths.exit_status, ec)) {
     std::ifstream in(paths.exit_status);
     int code = -1;
     in >> code;
@@ -126,12 +116,13 @@ MemberCondition inspect_member(const MemberPaths& paths, const std::string& expe
   if (fs::exists(paths.partial, ec) || fs::exists(paths.restart, ec)) {
     MemberCondition c;
     c.progress = read_progress(paths.progress);
-    // Live: a progress file naming a live process on this host; on another host (or before the
+    // Live: the member's lock has a live owner; else (a capsule run by hand, or by an older
+    // study) a progress file naming a live process on this host; on another host (or before the
     // first progress line) files written within kStaleSeconds.
-    bool live = false;
-    if (c.progress.present && c.progress.host == this_host()) {
+    bool live = owner.has_value();
+    if (!live && c.progress.present && c.progress.host == host_name()) {
       live = process_alive(c.progress.pid);
-    } else {
+    } else if (!live) {
       double age = c.progress.present ? c.progress.age_seconds : 1e300;
       if (fs::exists(paths.partial, ec)) age = std::min(age, age_seconds(paths.partial));
       live = age < kStaleSeconds;
@@ -192,6 +183,7 @@ bool needs_run(const MemberCondition& condition, bool rerun_unstable, bool rerun
     case MemberState::complete: return false;
     case MemberState::running: return false;  // a live capsule (another run, a Slurm task) owns it
     case MemberState::unreadable: return false;  // never run over a file that may be complete
+    case MemberState::queued: return false;      // a Slurm task will run it
     case MemberState::unstable: return rerun_unstable;
     case MemberState::stopped: return rerun_stopped;
     default: return true;

@@ -18,12 +18,14 @@ enum class MemberState {
   stopped,      // member.h5 with status "stopped: reason" (the solver threw; capsule exit 1)
   failed,       // the capsule exited non-zero without a member file, or the file is foreign (another id)
   unreadable,   // member.h5 exists but cannot be read (locked, no permission, damaged): kept, never rerun over
+  queued,       // not run yet, and its Slurm array task waits in the queue (slurm_queue.hpp): not run here too
 };
 
 // Every state, in the order the summaries list them.
 inline constexpr MemberState kAllMemberStates[] = {MemberState::complete, MemberState::fresh, MemberState::running,
                                                    MemberState::interrupted, MemberState::unstable,
-                                                   MemberState::stopped, MemberState::failed, MemberState::unreadable};
+                                                   MemberState::stopped, MemberState::failed, MemberState::unreadable,
+                                                   MemberState::queued};
 
 // What a running capsule last said about itself (member.h5.progress, solver/run/progress.hpp).
 struct MemberProgress {

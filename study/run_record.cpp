@@ -1,5 +1,8 @@
 #include "study/run_record.hpp"
 
+#include <fcntl.h>
+#include <sys/file.h>
+
 #include <chrono>
 #include <ctime>
 #include <filesystem>
@@ -38,6 +41,17 @@ nlohmann::json run_record_start(const std::string& campaign_name, const std::str
 }
 
 void append_run_history(const std::filesystem::path& history, const nlohmann::json& record) {
+  // Slurm tasks of one campaign append at the same time: one writer at a time (flock on a
+  // lock file beside it; released when the descriptor closes), else one task's line is lost.
+  const std::string lock_path = history.string() + ".lock";
+  const int fd = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd >= 0) ::flock(fd, LOCK_EX);
+  struct Unlock {
+    int fd;
+    ~Unlock() {
+      if (fd >= 0) ::close(fd);
+    }
+  } unlock{fd};
   std::string text = read_file_text(history);
   if (!text.empty() && text.back() != '\n') text += '\n';
   write_file_atomically(history, text + record.dump() + "\n");

@@ -14,7 +14,8 @@ namespace {
 // docs/guide/scenes.md "Exit status"; run_member() and `check` return these.
 const char* const exit_codes =
     "Exit status: 0 complete (check: the scene is valid), 1 the solver failed or a file could not be\n"
-    "written, 2 bad scene, output path or command line (nothing was run), 3 the member ended unstable.";
+    "written, 2 bad scene, output path or command line (nothing was run), 3 the member ended unstable,\n"
+    "4 stopped by SIGTERM, SIGINT or SIGUSR1 after writing a restart point (the same command continues).";
 }  // namespace
 
 int main(int argc, char** argv) {

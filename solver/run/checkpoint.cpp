@@ -1,6 +1,9 @@
 #include "solver/run/checkpoint.hpp"
 
+#include <signal.h>
+
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -23,6 +26,20 @@ constexpr const char* kRestartFormat = "capsule restart point 1";
 double steady_seconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
+
+namespace {
+volatile std::sig_atomic_t g_stop_signal = 0;
+extern "C" void note_stop_signal(int signal) { g_stop_signal = signal; }
+}  // namespace
+
+void install_stop_signals() {
+  struct sigaction action {};
+  action.sa_handler = note_stop_signal;
+  sigemptyset(&action.sa_mask);
+  for (int signal : {SIGTERM, SIGINT, SIGUSR1}) sigaction(signal, &action, nullptr);
+}
+
+int stop_signal() { return g_stop_signal; }
 
 std::string restart_path_for(const std::string& member_path) { return member_path + ".restart"; }
 

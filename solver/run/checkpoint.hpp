@@ -34,6 +34,17 @@ struct SimulatedKill {
   long step;
 };
 
+// A stop asked by a signal: SIGTERM (a job's time limit, scancel, GNU Parallel stopping), SIGINT
+// (Ctrl-C) or SIGUSR1 (Slurm's --signal warning before the time limit). The handlers only set a
+// flag; the output loop then writes a restart point at the next step and throws StoppedBySignal,
+// so the member ends as a kill would, except that the same command continues from that step.
+void install_stop_signals();
+int stop_signal();  // the signal that asked for the stop, 0 while none has
+struct StoppedBySignal {
+  long step;
+  int signal;
+};
+
 // Thrown when a restart point whose identity matched still does not fit the rebuilt run (a
 // field of the wrong size, another reference shape): the member then starts afresh.
 struct RestartRefused : std::runtime_error {

@@ -186,6 +186,10 @@ std::string run_output_loop(Sim& sim, const Scene& scene, Protocol& protocol, io
     for (long i = first_step; i < steps_per_output; ++i) {
       bool healthy = true;
       if constexpr (requires { sim.failure(); }) healthy = sim.failure().empty();
+      if (stop_signal() != 0) {  // a job's time limit, scancel, Ctrl-C: keep the work done so far
+        if (!control.restart_path.empty() && healthy) write_restart_point(i);
+        throw StoppedBySignal{sim.steps(), stop_signal()};
+      }
       if (!control.restart_path.empty() && healthy && clock.due(sim.steps())) write_restart_point(i);
       if (control.checkpoint.stop_after_step >= 0 && sim.steps() >= control.checkpoint.stop_after_step)
         throw SimulatedKill{sim.steps()};

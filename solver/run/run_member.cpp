@@ -56,6 +56,7 @@ int run_member(const RunOptions& options) {
     std::cerr << "capsule: " << options.scene_path << ": " << too_big << "\n";
     return 2;
   }
+  install_stop_signals();
   if (options.threads > 0) omp_set_num_threads(options.threads);
   const long threads = options.threads > 0 ? options.threads : omp_get_max_threads();
 
@@ -135,6 +136,12 @@ int run_member(const RunOptions& options) {
       std::cerr << "capsule: stopped at step " << k.step
                 << " as asked (--stop-after-step); the .partial and the restart point are kept\n";
       return 1;
+    } catch (const StoppedBySignal& s) {
+      std::cerr << "capsule: stopped by signal " << s.signal << " at step " << s.step << "; "
+                << (std::filesystem::exists(restart_path) ? "the restart point is written: the same command continues from it"
+                                                          : "no restart point (healthy state unknown): the member starts afresh")
+                << "\n";
+      return kExitStoppedBySignal;
     }
     resume.reset();
     out->set_attribute("finished", utc_now());

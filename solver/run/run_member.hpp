@@ -16,7 +16,10 @@ struct RunOptions {
   CheckpointPolicy checkpoint;  // restart points (docs/guide/running.md "Checkpoints")
 };
 
-// Exit codes: 0 complete, 3 unstable, 2 bad scene or usage, 1 other failure.
+// Exit codes: 0 complete, 3 unstable, 2 bad scene or usage, 1 other failure, 4 stopped by a
+// signal (SIGTERM, SIGINT, SIGUSR1) after writing a restart point: not an end, the same command
+// continues the member.
+inline constexpr int kExitStoppedBySignal = 4;
 // With a restart point beside the output (<output>.restart) of the same scene, physics and
 // build, the run continues from it; one of another identity is refused and removed.
 int run_member(const RunOptions& options);

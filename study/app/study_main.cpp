@@ -12,6 +12,7 @@
 #include "study/campaign_runner.hpp"
 #include "study/campaign_survey.hpp"
 #include "study/exit_status.hpp"
+#include "study/member_run.hpp"
 #include "study/provenance.hpp"
 #include "study/plan_table.hpp"
 #include "study/run_lock.hpp"
@@ -54,6 +55,13 @@ int main_body(int argc, char** argv) {
                   "GNU Parallel --sshloginfile: run members on these hosts (shared filesystem assumed)")
       ->check(CLI::ExistingFile);
   run->add_option("--ssh", run_request.ssh_command, "ssh command for --hosts (GNU Parallel --ssh)");
+  run->add_option("--retries", run_request.retries,
+                  "with --hosts: tries of a member whose start failed (ssh could not reach its host), each on "
+                  "another host; a member that ran and failed is not retried")
+      ->capture_default_str()->check(count);
+  run->add_option("--checkpoint-seconds", run_request.checkpoint_seconds,
+                  "wall seconds between a member's restart points (capsule --checkpoint-seconds)")
+      ->capture_default_str()->check(CLI::PositiveNumber);
   run->add_flag("--rerun-unstable", run_request.rerun_unstable, "also rerun members that ended unstable");
   run->add_flag("--allow-dirty", run_request.allow_dirty,
                 "run even when this build's sources differ from every commit (recorded in run.json)");
@@ -68,6 +76,18 @@ int main_body(int argc, char** argv) {
                   "run only the members whose scene has KEY=VALUE (repeatable, all must hold; e.g. resolution.a=5 "
                   "runs the cheap level of a resolution ladder first)");
   run->add_option("--results", results_dir, "results folder")->capture_default_str();
+
+  MemberRunRequest member_request;
+  auto* run_member = app.add_subcommand(
+      "run-member", "run one member folder as every engine does (the generated run_member.sh execs it): its lock, "
+                    "a complete member left alone, capsule's output appended to capsule.log, signals passed on");
+  run_member->add_option("member_dir", member_request.member_dir, "the member's folder (<results>/<campaign>/members/<member>)")
+      ->required()->check(CLI::ExistingDirectory);
+  run_member->add_option("threads", member_request.threads, "OpenMP threads of the member")->required()->check(count);
+  run_member->add_option("--capsule", member_request.capsule_binary, "the capsule binary")->required();
+  run_member->add_option("--checkpoint-seconds", member_request.checkpoint_seconds,
+                         "wall seconds between restart points")
+      ->capture_default_str()->check(CLI::PositiveNumber);
 
   std::string status_file;
   bool status_as_json = false;
@@ -123,6 +143,21 @@ int main_body(int argc, char** argv) {
   exporter->add_flag("--no-reuse{false}", slurm_options.reuse_finished,
                      "export every member, even one that another campaign under the results folder finished "
                      "(default: copy that member's files)");
+  exporter->add_option("--checkpoint-seconds", slurm_options.checkpoint_seconds,
+                       "wall seconds between a member's restart points (a task also writes one 120 s before its time "
+                       "limit)")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  exporter->add_option("--array-max", slurm_options.array_max,
+                       "members per script: an array over this many is split into several (Slurm's MaxArraySize, "
+                       "default 1001, bounds the task ids)")
+      ->capture_default_str()->check(count);
+  exporter->add_option("--throttle", slurm_options.throttle, "at most N tasks of a script at once (--array=...%N)")
+      ->check(count);
+  exporter->add_option("--partition,-p", slurm_options.partition, "#SBATCH --partition");
+  exporter->add_option("--account,-A", slurm_options.account, "#SBATCH --account");
+  exporter->add_option("--qos", slurm_options.qos, "#SBATCH --qos");
+  exporter->add_option("--sbatch", slurm_options.sbatch_lines,
+                       "a further #SBATCH line, e.g. --sbatch=--constraint=avx2 (repeatable)");
   exporter->add_option("--results", results_dir, "results folder")->capture_default_str();
 
   if (const int code = capsule::cli::parse_or_exit_code(app, argc, argv); code >= 0) return code;
@@ -136,6 +171,7 @@ int main_body(int argc, char** argv) {
   }
   run_request.allow_dirty = run_request.allow_dirty || allow_dirty_from_environment();
   slurm_options.allow_dirty = slurm_options.allow_dirty || allow_dirty_from_environment();
+  if (*run_member) return run_one_member(member_request, std::cerr);
   if (*run) {
     run_request.results_dir = results_dir;
     run_request.progress_bar = ::isatty(STDOUT_FILENO) != 0;
@@ -157,13 +193,15 @@ int main_body(int argc, char** argv) {
   if (*exporter) {
     const CampaignSurvey survey = survey_campaign(export_file, results_dir);
     const SlurmExport e = export_slurm(survey, slurm_options);
-    std::cout << e.copied << "job list: " << e.job_list.string() << "\nscript:   " << e.script.string() << "\n"
-              << e.pending.size() << " of " << survey.members.size() << " members to run";
+    std::cout << e.copied << "job list: " << e.job_list.string() << "\n";
+    for (const auto& sc : e.scripts)
+      std::cout << "script:   " << sc.path.string() << " (" << sc.tasks.size() << " tasks, job " << sc.job_name << ")\n";
+    std::cout << e.pending.size() << " of " << survey.members.size() << " members to run";
     if (e.pending.empty())
       std::cout << ": nothing to submit\n";
     else
-      std::cout << " (" << e.resources.cpus << " CPUs, --time " << e.resources.time << ", --mem "
-                << e.resources.mem << " per task); submit with: sbatch " << e.script.string() << "\n";
+      std::cout << " (" << e.resources.cpus << " CPUs, --time " << e.resources.time << ", --mem " << e.resources.mem
+                << " per task); submit with: sh " << e.submit.string() << " (arguments go to sbatch)\n";
     return exit_ok;
   }
   return exit_usage;

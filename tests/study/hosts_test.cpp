@@ -1,6 +1,7 @@
 // Several hosts: GNU Parallel's --sshloginfile with two host entries. An --ssh stand-in
 // runs the remote command locally (as ssh would on a host sharing the filesystem).
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <set>
 
 #include "study/campaign_survey.hpp"
@@ -37,5 +38,24 @@ TEST_CASE("members run on every host of a --hosts file", "[study]") {
     CHECK(e.exit_value == 0);
   }
   CHECK(hosts == std::set<std::string>{"node-a", "node-b"});
+  fs::remove_all(dir);
+}
+
+TEST_CASE("the hosts file's per-host counts are honoured: 1/host runs one member at a time", "[study]") {
+  const fs::path dir = testing::scratch_dir("hosts_counts");
+  testing::write_text(dir / "c.json", testing::tiny_campaign("counts", {0.01, 0.02, 0.03}, 3, 0).dump());
+  testing::write_text(dir / "hosts", "1/node-a\n");
+  testing::write_text(dir / "fake-ssh", "#!/bin/sh\nhost=$1; shift\n[ \"$1\" = \"--\" ] && shift\nexec sh -c \"$*\"\n");
+  fs::permissions(dir / "fake-ssh", fs::perms::owner_all);
+  // No -j: study passes no --jobs, so GNU Parallel takes the 1 of "1/node-a".
+  const auto run = testing::run_study({"run", "c.json", "--hosts", "hosts", "--ssh", (dir / "fake-ssh").string()}, dir);
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  auto log = read_joblog(s.layout.joblog());
+  REQUIRE(log.size() == 3);
+  std::sort(log.begin(), log.end(), [](const JoblogEntry& a, const JoblogEntry& b) { return a.start < b.start; });
+  for (std::size_t i = 1; i < log.size(); ++i)  // each starts after the one before ended (10 ms of clock slack)
+    CHECK(log[i].start >= log[i - 1].start + log[i - 1].runtime - 0.01);
   fs::remove_all(dir);
 }

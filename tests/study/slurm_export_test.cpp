@@ -67,9 +67,9 @@ TEST_CASE("Slurm export refuses a results path with a line break before writing 
   fs::remove_all(dir);
 }
 
-TEST_CASE("the #SBATCH --output line is quoted, with % doubled", "[study]") {
+TEST_CASE("the #SBATCH --output line is quoted, with % doubled, one file per submission and task", "[study]") {
   CHECK(sbatch_output_line("/shared/my results/100%/slurm") ==
-        "#SBATCH --output=\"/shared/my results/100%%/slurm/task-%a.out\"");
+        "#SBATCH --output=\"/shared/my results/100%%/slurm/task-%A_%a.out\"");
   CHECK_THROWS_AS(sbatch_output_line("/shared/a\"b/slurm"), UnsafePathError);
 }
 
@@ -122,5 +122,76 @@ TEST_CASE("with nothing pending the Slurm script has no --array and exits 0", "[
   const auto task = testing::run_shell("bash " + shell_quote(script.string()));
   CHECK(task.exit_code == 0);
   CHECK(task.output.find("nothing to run") != std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("an array over --array-max members is split into scripts Slurm accepts, with a submit helper", "[study]") {
+  const fs::path dir = testing::scratch_dir("slurm_split");
+  std::vector<double> ca;
+  for (int i = 0; i < 1100; ++i) ca.push_back(0.01 + 1e-4 * i);
+  testing::write_text(dir / "c.json", testing::tiny_campaign("split", ca, 1, 1).dump());
+  const auto exported = testing::run_study({"export", "c.json", "--slurm", "--throttle", "50", "-p", "short", "-A",
+                                            "proj_1", "--qos", "normal", "--sbatch=--constraint=avx2"},
+                                           dir);
+  INFO(exported.output);
+  REQUIRE(exported.exit_code == 0);
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const std::string first = testing::read_text(s.layout.slurm_dir() / "capsule-0.sbatch");
+  const std::string second = testing::read_text(s.layout.slurm_dir() / "capsule-1.sbatch");
+  // Task ids stay below Slurm's default MaxArraySize (1001); the second script starts at 1000.
+  CHECK(first.find("#SBATCH --array=0-999%50\n") != std::string::npos);
+  CHECK(second.find("#SBATCH --array=0-99%50\n") != std::string::npos);
+  CHECK(second.find("$((1000 + task + 1))p") != std::string::npos);
+  for (const std::string line : {"#SBATCH --partition=short\n", "#SBATCH --account=proj_1\n", "#SBATCH --qos=normal\n",
+                                 "#SBATCH --constraint=avx2\n", "#SBATCH --signal=B:USR1@120\n", "task-%A_%a.out"})
+    CHECK(first.find(line) != std::string::npos);
+  CHECK_FALSE(fs::exists(s.layout.slurm_dir() / "capsule.sbatch"));
+  const std::string submit = testing::read_text(s.layout.slurm_dir() / "submit.sh");
+  CHECK(submit.find("capsule-0.sbatch") != std::string::npos);
+  CHECK(submit.find("capsule-1.sbatch") != std::string::npos);
+  CHECK(testing::run_shell("sh -n " + shell_quote((s.layout.slurm_dir() / "submit.sh").string())).exit_code == 0);
+  // Task 99 of the second script runs member 1099.
+  const auto task = testing::run_shell("SLURM_ARRAY_TASK_ID=99 bash " +
+                                       shell_quote((s.layout.slurm_dir() / "capsule-1.sbatch").string()) + " 2>&1");
+  INFO(task.output);
+  CHECK(task.exit_code == 0);
+  CHECK(survey_campaign((dir / "c.json").string(), dir / "results").conditions[1099].state == MemberState::complete);
+  // A name Slurm would not take, or a line break, is refused before anything is written.
+  CHECK(testing::run_study({"export", "c.json", "--slurm", "-p", "a b"}, dir).exit_code == 2);
+  CHECK(testing::run_study({"export", "c.json", "--slurm", "--sbatch=--x\nrm -rf /"}, dir).exit_code == 2);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("members whose Slurm task waits in the queue are queued: status says so, re-export and run leave them out",
+          "[study]") {
+  const fs::path dir = testing::scratch_dir("slurm_queued");
+  testing::write_text(dir / "c.json", testing::tiny_campaign("queued", {0.01, 0.02, 0.03}, 1, 1).dump());
+  REQUIRE(testing::run_study({"export", "c.json", "--slurm"}, dir).exit_code == 0);
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const std::string job = nlohmann::json::parse(testing::read_text(s.layout.slurm_dir() / "export.json"))["scripts"][0]
+                              ["job_name"];
+  // A stand-in squeue: task 1 held in the queue, task 2 running.
+  fs::create_directories(dir / "bin");
+  testing::write_text(dir / "bin" / "squeue", "#!/bin/sh\necho '" + job + " 1 PENDING'\necho '" + job + " 2 RUNNING'\n");
+  fs::permissions(dir / "bin" / "squeue", fs::perms::owner_all);
+  const std::string path = "PATH=" + shell_quote((dir / "bin").string()) + ":\"$PATH\" ";
+  const auto study = [&](const std::string& args) {
+    return testing::run_shell("cd " + shell_quote(dir.string()) + " && " + path + "CAPSULE_BIN=" +
+                              shell_quote(testing::capsule_binary().string()) + " " +
+                              shell_quote(testing::study_binary().string()) + " " + args + " </dev/null");
+  };
+  const auto status = study("status c.json");
+  INFO(status.output);
+  CHECK(status.exit_code == 4);
+  CHECK(status.output.find("queued: 1") != std::string::npos);
+  CHECK(status.output.find("[queued] " + s.members[1].dir_name() + ": waiting in Slurm's queue: job " + job +
+                           " task 1 (PENDING)") != std::string::npos);
+  CHECK(status.output.find("`study export --slurm` again") != std::string::npos);
+  const auto again = study("export c.json --slurm");
+  INFO(again.output);
+  CHECK(testing::read_text(s.layout.slurm_dir() / "capsule.sbatch").find("#SBATCH --array=0,2\n") != std::string::npos);
+  const auto run = study("run c.json");
+  INFO(run.output);
+  CHECK(run.output.find("running 2 of 3") != std::string::npos);  // not the queued one
   fs::remove_all(dir);
 }
