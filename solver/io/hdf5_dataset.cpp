@@ -16,7 +16,7 @@ constexpr unsigned kDeflateLevel = 4;  // zlib's middle setting; the size gain i
 
 Hdf5Handle create_checked_file(const std::string& path) {
   Hdf5Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
-  if (!access.ok() || H5Pset_libver_bounds(access, H5F_LIBVER_V18, H5F_LIBVER_LATEST) < 0)
+  if (!access.ok() || H5Pset_libver_bounds(access, H5F_LIBVER_V110, H5F_LIBVER_LATEST) < 0)
     return Hdf5Handle(-1, H5Fclose);
   return Hdf5Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access), H5Fclose);
 }

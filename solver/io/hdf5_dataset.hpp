@@ -2,7 +2,7 @@
 // Datasets that can tell when they are damaged. Every dataset the toolkit writes is chunked
 // with HDF5's Fletcher32 checksum filter, so reading a chunk whose bytes changed on disk
 // fails instead of returning other numbers; member files add the shuffle and deflate
-// filters (h5py, h5dump and any HDF5 reader decode them unchanged). Files written before
+// filters (h5py, h5dump and any HDF5 1.10 reader decode them unchanged). Files written before
 // the filters existed (contiguous, unfiltered) are read as before.
 #include <hdf5.h>
 
@@ -12,9 +12,11 @@
 
 namespace capsule::io {
 
-// Creates (truncates) an HDF5 file in the 1.8 file format or later, whose superblock and object
-// headers carry checksums of their own (the metadata as well as the data can tell damage).
-// Returns an invalid handle on failure.
+// Creates (truncates) an HDF5 file in the 1.10 file format or later: its superblock and object
+// headers carry checksums of their own (the metadata as well as the data can tell damage), and a
+// dataset of one chunk needs no B-tree (a small member file would otherwise grow 2.6x from the
+// chunking: 51 against 19.6 KB for a 21-row 2D member; 17 KB this way). HDF5 1.10 or later reads
+// it (Debian 12's h5py, h5dump). Returns an invalid handle on failure.
 Hdf5Handle create_checked_file(const std::string& path);
 
 enum class DatasetFilters {
