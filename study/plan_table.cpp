@@ -70,9 +70,19 @@ void print_plan(const Campaign& plan_campaign, const ResultsLayout& layout, std:
       return std::nullopt;
     return elsewhere.find(m);
   };
+  // A large campaign is read twice (the cost first, then the table): say so, and how far the
+  // first pass is, so a 10^6-member plan is never silent for the better part of a minute.
+  std::size_t expected = 0;
+  for (const auto& c : plan_campaign.cases) expected += (c.sweep ? *c.sweep : plan_campaign.sweep).count();
+  if (plan_campaign.cases.empty()) expected = plan_campaign.sweep.count();
+  constexpr std::size_t kProgressEvery = 100000;
+  if (expected >= kProgressEvery)
+    out << "planning about " << expected << " members: their state and cost first, then the table\n" << std::flush;
+  std::size_t read = 0;
   for_each_member(
       plan_campaign,
       [&](Member&& m) {
+        if (++read % kProgressEvery == 0) out << "  read " << read << " of about " << expected << "\n" << std::flush;
         strays.erase(m.dir_name());
         const MemberCondition condition = inspect_member(layout.member(m), m.id);
         add_measurement(speed, m, layout.member(m));
