@@ -16,14 +16,20 @@ std::size_t CampaignSurvey::count(MemberState state) const {
   return n;
 }
 
-CampaignSurvey survey_campaign(const std::string& campaign_file, const fs::path& results_dir) {
+CampaignSurvey survey_campaign(const std::string& campaign_file, const fs::path& results_dir, SurveyDetail detail) {
   Campaign campaign = load_campaign(campaign_file);
   ResultsLayout layout(results_dir, campaign.name);
   require_same_campaign(campaign, layout);
-  std::vector<Member> members = expand_campaign(campaign);
+  std::vector<Member> members;
   std::vector<MemberCondition> conditions;
-  conditions.reserve(members.size());
-  for (const auto& m : members) conditions.push_back(inspect_member(layout.member(m), m.id));
+  for_each_member(
+      campaign,
+      [&](Member&& m) {
+        conditions.push_back(inspect_member(layout.member(m), m.id));
+        if (detail == SurveyDetail::states_only) m.scene = nlohmann::json();  // the bulk of a member
+        members.push_back(std::move(m));
+      },
+      [&](std::size_t index, const std::string& case_name) { members[index].other_cases.push_back(case_name); });
   // Members whose Slurm task waits in the queue (after an export): not new, so neither a
   // re-export nor `study run` starts them a second time.
   const SlurmQueue queue = slurm_queue(layout);

@@ -22,7 +22,12 @@ struct CampaignSurvey {
   std::size_t count(MemberState state) const;
 };
 
-CampaignSurvey survey_campaign(const std::string& campaign_file, const std::filesystem::path& results_dir);
+// What a survey keeps of each member: everything, or (for `study status`, which reads only
+// states) the member without its scene, so a 10^5-member campaign's status fits in little memory.
+enum class SurveyDetail { full, states_only };
+
+CampaignSurvey survey_campaign(const std::string& campaign_file, const std::filesystem::path& results_dir,
+                               SurveyDetail detail = SurveyDetail::full);
 
 // The folder names of the members that have a run in progress or an interrupted one (a
 // .partial or restart point and no member file): under a held run lock, the running ones.

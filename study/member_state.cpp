@@ -104,7 +104,10 @@ MemberCondition inspect_member(const MemberPaths& paths, const std::string& expe
   if (!owner && fs::exists(paths.exit_status, ec)) {
     std::ifstream in(paths.exit_status);
     int code = -1;
-    in >> code;
+    if (!(in >> code))  // the wrapper could not write it whole: a full or read-only disk, most likely
+      return {MemberState::failed, "its exit_status file is empty or damaged (a full or read-only disk?); " +
+                                       (last_line(paths.log).empty() ? std::string("capsule.log is empty")
+                                                                     : "capsule.log ends: " + last_line(paths.log))};
     if (code != 0) {
       std::string reason = exit_meaning(code);
       const std::string tail = last_line(paths.log);

@@ -178,7 +178,7 @@ int main_body(int argc, char** argv) {
     return run_campaign(run_request, std::cout).exit_code;
   }
   if (*status) {
-    const CampaignSurvey survey = survey_campaign(status_file, results_dir);
+    const CampaignSurvey survey = survey_campaign(status_file, results_dir, SurveyDetail::states_only);
     if (status_as_json) std::cout << status_json(survey).dump(2) << "\n";
     else print_status(survey, std::cout);
     return members_exit_code(survey);
