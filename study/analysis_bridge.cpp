@@ -10,18 +10,15 @@
 #include "study/exit_status.hpp"
 #include "study/report_freshness.hpp"
 
-#if __has_include("analysis/report.hpp") && __has_include("analysis/compare.hpp")
-#include "analysis/compare.hpp"
-#include "analysis/report.hpp"
-#include "analysis/thesis_report.hpp"
-#define CAPSULE_STUDY_HAS_REPORT 1
-#endif
+#include "analysis/compare/compare.hpp"
+#include "analysis/thesis/table2_compare.hpp"
+#include "analysis/report/report.hpp"
+#include "analysis/thesis/report.hpp"
 
 namespace capsule::study {
 
 namespace fs = std::filesystem;
 
-#ifdef CAPSULE_STUDY_HAS_REPORT
 
 namespace {
 
@@ -133,7 +130,9 @@ int compare_campaign_files(const std::vector<std::string>& campaign_files, bool 
   }
   const fs::path out_dir = fs::absolute(results_dir) / "compare" / joined;
   fs::create_directories(out_dir);
-  return analysis::compare_campaigns(entries, against_table2, out, out_dir.string());
+  return analysis::compare_campaigns(entries, out, out_dir.string(),
+                                     against_table2 ? analysis::CompareSection(analysis::table2_comparison)
+                                                    : analysis::CompareSection());
 }
 
 int write_thesis_comparison(const fs::path& results_dir, const fs::path& out_file, std::ostream& out) {
@@ -144,20 +143,5 @@ int write_thesis_comparison(const fs::path& results_dir, const fs::path& out_fil
   return 0;
 }
 
-#else
-
-int report_campaign(const CampaignSurvey&, const ReportOptions&, std::ostream&) {
-  throw std::runtime_error("this build has no analysis report (analysis/report.hpp missing)");
-}
-
-int compare_campaign_files(const std::vector<std::string>&, bool, const fs::path&, std::ostream&) {
-  throw std::runtime_error("this build has no campaign comparison (analysis/compare.hpp missing)");
-}
-
-int write_thesis_comparison(const fs::path&, const fs::path&, std::ostream&) {
-  throw std::runtime_error("this build has no dissertation comparison (analysis/thesis_report.hpp missing)");
-}
-
-#endif
 
 }  // namespace capsule::study

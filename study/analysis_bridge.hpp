@@ -1,7 +1,6 @@
 #pragma once
 // `study report` and `study compare`: hand finished members to the analysis library
-// (analysis/report.hpp, analysis/compare.hpp). Kept apart so the rest of study builds
-// while the analysis API is being written.
+// (analysis/report/report.hpp, analysis/compare/compare.hpp, analysis/thesis/report.hpp).
 #include <filesystem>
 #include <ostream>
 #include <string>

@@ -4,7 +4,7 @@
 #include <set>
 #include <sstream>
 
-#include "analysis/analysis_block.hpp"
+#include "analysis/report/analysis_block.hpp"
 #include "solver/scene/json_text.hpp"
 #include "study/campaign_error.hpp"
 #include "study/json_path.hpp"

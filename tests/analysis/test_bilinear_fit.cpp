@@ -8,9 +8,9 @@
 
 #include <Eigen/Dense>
 
-#include "analysis/artificial_viscosity.hpp"
-#include "analysis/bilinear_fit.hpp"
-#include "analysis/fit_statistics.hpp"
+#include "analysis/fit/artificial_viscosity.hpp"
+#include "analysis/fit/bilinear_fit.hpp"
+#include "analysis/fit/fit_statistics.hpp"
 
 using namespace capsule::analysis;
 

@@ -8,10 +8,10 @@
 
 #include <algorithm>
 
-#include "analysis/analysis_block.hpp"
-#include "analysis/fit_result.hpp"
-#include "analysis/report.hpp"
-#include "analysis/table2_compare.hpp"
+#include "analysis/report/analysis_block.hpp"
+#include "analysis/fit/fit_result.hpp"
+#include "analysis/report/report.hpp"
+#include "analysis/thesis/table2_compare.hpp"
 #include "tests/analysis/synthetic_campaign.hpp"
 
 using namespace capsule::analysis;

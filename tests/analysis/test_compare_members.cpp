@@ -10,10 +10,10 @@
 
 #include <unistd.h>
 
-#include "analysis/compare.hpp"
-#include "analysis/fit_result.hpp"
-#include "analysis/member_compare.hpp"
-#include "analysis/report.hpp"
+#include "analysis/compare/compare.hpp"
+#include "analysis/fit/fit_result.hpp"
+#include "analysis/compare/member_compare.hpp"
+#include "analysis/report/report.hpp"
 #include "tests/analysis/synthetic_campaign.hpp"
 
 using namespace capsule::analysis;
@@ -85,7 +85,7 @@ TEST_CASE("compare_campaigns sets matched members' fitted times side by side", "
   write_report(fine);
   std::ostringstream text;
   const fs::path out_dir = tmp.path / "cmp";
-  const int rc = compare_campaigns({{"coarse", coarse.out_dir}, {"fine", fine.out_dir}}, false, text, out_dir.string());
+  const int rc = compare_campaigns({{"coarse", coarse.out_dir}, {"fine", fine.out_dir}}, text, out_dir.string());
   CHECK(rc == 1);
   for (const char* ext : {".md", ".csv", ".tex"}) {
     CHECK(fs::exists(out_dir / (std::string("compare_members") + ext)));
@@ -143,7 +143,7 @@ TEST_CASE("compare_campaigns sets matched members' fitted times side by side", "
 
   // The same campaign twice: every interval overlaps, nothing unmatched.
   std::ostringstream again;
-  CHECK(compare_campaigns({{"coarse", coarse.out_dir}, {"again", coarse.out_dir}}, false, again,
+  CHECK(compare_campaigns({{"coarse", coarse.out_dir}, {"again", coarse.out_dir}}, again,
                           (tmp.path / "cmp2").string()) == 0);
   CHECK_THAT(again.str(), Contains("Every member appears in every campaign.") && !Contains("| NO |"));
 }

@@ -9,9 +9,9 @@
 
 #include <unistd.h>
 
-#include "analysis/bilinear_fit.hpp"
-#include "analysis/exponential_fits.hpp"
-#include "analysis/member_fits.hpp"
+#include "analysis/fit/bilinear_fit.hpp"
+#include "analysis/fit/exponential_fits.hpp"
+#include "analysis/fit/member_fits.hpp"
 #include "solver/io/member_file.hpp"
 
 using namespace capsule::analysis;

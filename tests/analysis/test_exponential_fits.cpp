@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "analysis/exponential_fits.hpp"
+#include "analysis/fit/exponential_fits.hpp"
 
 using namespace capsule::analysis;
 

@@ -7,7 +7,7 @@
 
 #include <unistd.h>
 
-#include "analysis/member_fits.hpp"
+#include "analysis/fit/member_fits.hpp"
 #include "solver/io/member_file.hpp"
 
 using namespace capsule::analysis;

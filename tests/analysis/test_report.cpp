@@ -10,9 +10,10 @@
 
 #include <unistd.h>
 
-#include "analysis/compare.hpp"
-#include "analysis/plot_script.hpp"
-#include "analysis/report.hpp"
+#include "analysis/compare/compare.hpp"
+#include "analysis/thesis/table2_compare.hpp"
+#include "analysis/report/plot_script.hpp"
+#include "analysis/report/report.hpp"
 #include "tests/analysis/synthetic_campaign.hpp"
 
 using namespace capsule::analysis;
@@ -183,7 +184,7 @@ TEST_CASE("compare_campaigns flags non-overlapping intervals", "[analysis]") {
   write_report(r1);
   write_report(r2);
   std::ostringstream text;
-  const int rc = compare_campaigns({{"one", r1.out_dir}, {"two", r2.out_dir}}, false, text,
+  const int rc = compare_campaigns({{"one", r1.out_dir}, {"two", r2.out_dir}}, text,
                                    (tmp.path / "cmp").string());
   CHECK(rc == 1);
   CHECK_THAT(text.str(), Contains("NO"));
@@ -197,16 +198,16 @@ TEST_CASE("compare_campaigns flags non-overlapping intervals", "[analysis]") {
   }
   // A campaign against itself: every interval overlaps.
   std::ostringstream same;
-  CHECK(compare_campaigns({{"one", r1.out_dir}, {"again", r1.out_dir}}, false, same, (tmp.path / "cmp2").string()) ==
+  CHECK(compare_campaigns({{"one", r1.out_dir}, {"again", r1.out_dir}}, same, (tmp.path / "cmp2").string()) ==
         0);
   // Against Table 2: Ca = 0.05, E_b = 0 rows exist; the synthetic coefficients differ from them.
   std::ostringstream t2;
-  compare_campaigns({{"one", r1.out_dir}}, true, t2, (tmp.path / "cmp3").string());
+  compare_campaigns({{"one", r1.out_dir}}, t2, (tmp.path / "cmp3").string(), table2_comparison);
   CHECK_THAT(t2.str(), Contains("0.2711 ± 0.0109"));
   CHECK(fs::exists(tmp.path / "cmp3" / "compare_table2.csv"));
   CHECK(lines(slurp(tmp.path / "cmp3" / "compare_table2.csv")).size() == 1 + 2 * 3);
   // A missing report is an error naming the file.
-  CHECK_THROWS_WITH(compare_campaigns({{"none", (tmp.path / "nowhere").string()}}, false, same,
+  CHECK_THROWS_WITH(compare_campaigns({{"none", (tmp.path / "nowhere").string()}}, same,
                                       (tmp.path / "cmp4").string()),
                     Contains("fits.json"));
 }

@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "analysis/report.hpp"
-#include "analysis/report_context.hpp"
-#include "analysis/scene_parameter.hpp"
-#include "analysis/table.hpp"
+#include "analysis/report/report.hpp"
+#include "analysis/report/report_context.hpp"
+#include "analysis/report/scene_parameter.hpp"
+#include "analysis/report/table.hpp"
 #include "tests/analysis/synthetic_campaign.hpp"
 
 using namespace capsule::analysis;

@@ -9,9 +9,9 @@
 #include <sstream>
 #include <string>
 
-#include "analysis/published_curves.hpp"
-#include "analysis/report.hpp"
-#include "analysis/report_context.hpp"
+#include "analysis/report/published_curves.hpp"
+#include "analysis/report/report.hpp"
+#include "analysis/report/report_context.hpp"
 #include "solver/io/member_file.hpp"
 #include "tests/analysis/synthetic_campaign.hpp"
 
@@ -149,8 +149,8 @@ TEST_CASE("Published block: unknown curves and keys are refused with their path"
   CHECK_THROWS_WITH(write_report(req), Contains("/analysis/published: expected a non-empty array"));
 }
 
-#include "analysis/thesis_report.hpp"
-#include "analysis/thesis_validation.hpp"
+#include "analysis/thesis/report.hpp"
+#include "analysis/thesis/validation.hpp"
 
 TEST_CASE("THESIS.md validation: the published rows of ch2_3d_ca, and cannot tell without them", "[analysis][published]") {
   TempDir tmp("thesis_validation");

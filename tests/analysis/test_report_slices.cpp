@@ -13,7 +13,7 @@
 
 #include <unistd.h>
 
-#include "analysis/report.hpp"
+#include "analysis/report/report.hpp"
 #include "solver/io/member_file.hpp"
 #include "solver/membrane3d/shapes.hpp"
 #include "tests/analysis/synthetic_campaign.hpp"

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <vector>
 
-#include "analysis/pareto.hpp"
-#include "analysis/richardson.hpp"
+#include "analysis/fit/pareto.hpp"
+#include "analysis/fit/richardson.hpp"
 
 using namespace capsule::analysis;
 using Catch::Matchers::Contains;

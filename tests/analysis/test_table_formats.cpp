@@ -1,7 +1,7 @@
 // Markdown, CSV and LaTeX writers: quoting and escaping.
 #include <catch2/catch.hpp>
 
-#include "analysis/table.hpp"
+#include "analysis/report/table.hpp"
 
 using namespace capsule::analysis;
 using Catch::Matchers::Contains;

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <limits>
 
-#include "analysis/thesis_claims.hpp"
-#include "analysis/thesis_report.hpp"
+#include "analysis/thesis/claims.hpp"
+#include "analysis/thesis/report.hpp"
 #include "solver/io/member_file.hpp"
 #include "synthetic_campaign.hpp"
 #include "thesis_fixtures.hpp"

@@ -2,9 +2,9 @@
 // give the right differences, overlaps, ratios and "cannot tell" for a campaign not run.
 #include <catch2/catch.hpp>
 
-#include "analysis/fit_statistics.hpp"
-#include "analysis/thesis_report.hpp"
-#include "analysis/thesis_table2.hpp"
+#include "analysis/fit/fit_statistics.hpp"
+#include "analysis/thesis/report.hpp"
+#include "analysis/thesis/table2.hpp"
 #include "synthetic_campaign.hpp"
 #include "thesis_fixtures.hpp"
 

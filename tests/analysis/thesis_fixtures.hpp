@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/fit_result.hpp"
+#include "analysis/fit/fit_result.hpp"
 
 namespace capsule::analysis::testing {
 

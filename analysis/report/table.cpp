@@ -1,0 +1,121 @@
+#include "analysis/report/table.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace capsule::analysis {
+
+namespace {
+std::string md_cell(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '|') out += "\\|";
+    else if (c == '\n') out += ' ';
+    else out += c;
+  }
+  return out;
+}
+std::string csv_cell(const std::string& s) {
+  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"') out += "\"\"";
+    else out += c;
+  }
+  return out + "\"";
+}
+std::string tex_cell(const std::string& s) {
+  std::string out;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    switch (c) {
+      case '\\': out += "\\textbackslash{}"; break;
+      case '_': case '%': case '&': case '#': case '$': case '{': case '}':
+        out += '\\';
+        out += c;
+        break;
+      case '~': out += "\\textasciitilde{}"; break;
+      case '^': out += "\\textasciicircum{}"; break;
+      default:
+        // "±" (UTF-8 C2 B1) -> $\pm$
+        if (static_cast<unsigned char>(c) == 0xC2 && i + 1 < s.size() && static_cast<unsigned char>(s[i + 1]) == 0xB1) {
+          out += "$\\pm$";
+          ++i;
+        } else {
+          out += c;
+        }
+    }
+  }
+  return out;
+}
+}  // namespace
+
+std::string format_number(double x) {
+  if (!std::isfinite(x)) return "";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", x);
+  return buf;
+}
+
+std::string Table::to_markdown() const {
+  std::ostringstream s;
+  if (!title.empty()) s << "**" << md_cell(title) << "**\n\n";
+  s << "|";
+  for (const auto& h : header) s << " " << md_cell(h) << " |";
+  s << "\n|";
+  for (std::size_t i = 0; i < header.size(); ++i) s << "---|";
+  s << "\n";
+  for (const auto& row : rows) {
+    s << "|";
+    for (const auto& c : row) s << " " << md_cell(c) << " |";
+    s << "\n";
+  }
+  return s.str();
+}
+
+std::string Table::to_csv() const {
+  std::ostringstream s;
+  for (std::size_t i = 0; i < header.size(); ++i) s << (i ? "," : "") << csv_cell(header[i]);
+  s << "\n";
+  for (const auto& row : rows) {
+    for (std::size_t i = 0; i < row.size(); ++i) s << (i ? "," : "") << csv_cell(row[i]);
+    s << "\n";
+  }
+  return s.str();
+}
+
+std::string Table::to_latex() const {
+  std::ostringstream s;
+  s << "\\begin{table}\n\\centering\n";
+  if (!title.empty()) s << "\\caption{" << tex_cell(title) << "}\n";
+  s << "\\begin{tabular}{" << std::string(header.size(), 'l') << "}\n\\hline\n";
+  for (std::size_t i = 0; i < header.size(); ++i) s << (i ? " & " : "") << tex_cell(header[i]);
+  s << " \\\\\n\\hline\n";
+  for (const auto& row : rows) {
+    for (std::size_t i = 0; i < row.size(); ++i) s << (i ? " & " : "") << tex_cell(row[i]);
+    s << " \\\\\n";
+  }
+  s << "\\hline\n\\end{tabular}\n\\end{table}\n";
+  return s.str();
+}
+
+std::vector<std::string> Table::write(const std::string& dir, const std::string& stem) const {
+  std::filesystem::create_directories(dir);
+  std::vector<std::string> files;
+  const std::pair<const char*, std::string> outputs[] = {
+      {".md", to_markdown()}, {".csv", to_csv()}, {".tex", to_latex()}};
+  for (const auto& [ext, text] : outputs) {
+    const std::string path = (std::filesystem::path(dir) / (stem + ext)).string();
+    std::ofstream f(path);
+    f << text;
+    if (!f) throw std::runtime_error("cannot write " + path);
+    files.push_back(path);
+  }
+  return files;
+}
+
+}  // namespace capsule::analysis

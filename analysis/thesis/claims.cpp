@@ -1,0 +1,44 @@
+#include "analysis/thesis/claims.hpp"
+
+#include "analysis/thesis/claims/chapters.hpp"
+
+namespace capsule::analysis {
+
+using namespace claims;
+
+std::vector<ClaimResult> evaluate_claims(const ThesisResults& res) {
+  std::vector<ClaimResult> out;
+  out.push_back(claim_2_mesh(res));
+  out.push_back(claim_2_G(res));
+  out.push_back(claim_3_1(res));
+  for (const char* c : {"2d", "3d"}) out.push_back(claim_3_2_proportional(res, c));
+  for (const char* c : {"2d", "3d"}) out.push_back(claim_3_2_constant(res, c));
+  for (const char* c : {"2d", "3d"}) out.push_back(claim_3_3_falls(res, c, "recovery.k_tau_r"));
+  out.push_back(claim_3_3_falls(res, "3d", "response.k_tau_s"));
+  out.push_back(claim_3_3_slight(res));
+  for (const char* c : {"2d", "3d"}) out.push_back(claim_3_4_linear(res, c));
+  for (const char* c : {"2d", "3d"}) out.push_back(claim_3_4_small_V(res, c));
+  out.push_back(claim_3_5_2d(res));
+  out.push_back(claim_3_5_3d(res));
+  out.push_back(claim_orders(res, "4.1.1", "two-phase recovery of the tank-treading 2D biconcave capsule: k tau_R1 = O(0.1), k tau_R2 = O(10)",
+                             "ch4_2d_tt", "two_phase", -1, 1));
+  out.push_back(claim_4_1_1_R1(res));
+  out.push_back(claim_4_1_1_R2(res));
+  out.push_back(claim_4_1_1_no_bending(res));
+  out.push_back(claim_4_1_2_r2(res));
+  out.push_back(claim_orders(res, "4.1.2", "tumbling recovery (90): k tau_R1 = O(0.1), k tau_R2 = O(1)", "ch4_2d_tumble",
+                             "double_exponential", -1, 0));
+  out.push_back(claim_4_1_2_fig38(res));
+  out.push_back(claim_4_2_A(res));
+  out.push_back(claim_4_2_B(res));
+  out.push_back(claim_4_2_C(res));
+  out.push_back(claim_5_1_2(res, "ch5_bilinear_ca005", 0.2, "Fig. 55"));
+  out.push_back(claim_5_1_2(res, "ch5_bilinear_ca005_eb", 1.0, "Fig. 56"));
+  out.push_back(claim_5_2_pairs(res, true));
+  out.push_back(claim_5_2_pairs(res, false));
+  out.push_back(claim_5_2_mesh(res));
+  out.push_back(claim_5_2_gamma(res));
+  return out;
+}
+
+}  // namespace capsule::analysis

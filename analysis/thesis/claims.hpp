@@ -1,0 +1,26 @@
+#pragma once
+// The claims of the dissertation's Chapters 2-5, each a small rule with a stated numeric
+// criterion, judged from the shipped campaigns' fitted times (and, where a claim is about
+// a curve, their member files) as agrees / differs / cannot tell, with the numbers.
+#include <string>
+#include <vector>
+
+#include "analysis/thesis/results.hpp"
+#include "analysis/thesis/rules.hpp"
+
+namespace capsule::analysis {
+
+struct ClaimResult {
+  std::string section;    // the dissertation's section, e.g. "3.2"
+  std::string statement;  // what the text says
+  std::string campaign;   // the campaign (and case) that tests it
+  std::string criterion;  // the rule, in numbers
+  Verdict verdict = Verdict::cannot_tell;
+  std::string measured;   // what the toolkit measures, or why it cannot tell
+};
+
+// Every claim, in the order of the text. Never throws for missing campaigns or members
+// (they give "cannot tell" naming what is missing).
+std::vector<ClaimResult> evaluate_claims(const ThesisResults& results);
+
+}  // namespace capsule::analysis

@@ -1,0 +1,225 @@
+// The claims of the dissertation's Chapter 3 (the circle and the sphere), each a rule with a stated numeric
+// criterion (claims/support.hpp).
+#include "analysis/thesis/claims/chapters.hpp"
+#include "analysis/thesis/claims/support.hpp"
+
+namespace capsule::analysis::claims {
+
+// Sec. 3.1: "In general, exponential fittings ... had R^2 > 0.99. ... For larger E_b, the
+// recovery model was less accurate, with R^2 as low as 0.92. Also, for high V or eta, the
+// response model only had R^2 > 0.97."
+ClaimResult claim_3_1(const ThesisResults& res) {
+  ClaimResult r = claim("3.1",
+                        "R^2 of the single exponential fits (85), (86) > 0.99, except recovery at large E_b (down to "
+                        "0.92) and response at large V or eta (> 0.97)",
+                        "ch3_ca, ch3_eb, ch3_v, ch3_eta (2d and 3d)",
+                        "every response fit R^2 > 0.99 (> 0.97 where V > 1 or eta > 1) and every recovery fit R^2 > "
+                        "0.99 (>= 0.92 where E_b > 0.05); a fit refused for R^2 < 0.5 fails. Agrees needs all four "
+                        "campaigns; one failing fit is enough to differ");
+  const char* names[] = {"ch3_ca", "ch3_eb", "ch3_v", "ch3_eta"};
+  std::size_t checked = 0;
+  std::vector<std::string> missing, failures;
+  double min_resp = 1.0, min_rec = 1.0;
+  for (const char* n : names) {
+    const ThesisCampaign& c = res.campaign(n);
+    if (!c.found) {
+      missing.push_back(c.missing);
+      continue;
+    }
+    for (const ThesisMember* m : c.in_case("")) {
+      const double V = parameter(*m, "V"), eta = parameter(*m, "eta"), Eb = parameter(*m, "E_b");
+      for (const char* fit : {"response", "recovery"}) {
+        const auto it = m->fits.find(fit);
+        if (it == m->fits.end()) continue;
+        const bool response = std::string(fit) == "response";
+        const double bound = response ? ((V > 1.0 || eta > 1.0) ? 0.97 : 0.99) : (Eb > 0.05 ? 0.92 : 0.99);
+        if (is_refused_for_r2(it->second)) {
+          ++checked;
+          failures.push_back(std::string(n) + "/" + m->slug + " " + fit + " R^2 < 0.5 (bound " + num(bound) + ")");
+          continue;
+        }
+        if (!it->second.ok) continue;
+        ++checked;
+        const double r2 = it->second.r_squared;
+        (response ? min_resp : min_rec) = std::min(response ? min_resp : min_rec, r2);
+        const bool ok = response ? r2 > bound : (bound == 0.92 ? r2 >= bound : r2 > bound);
+        if (!ok) failures.push_back(std::string(n) + "/" + m->slug + " " + fit + " R^2 " + num(r2) + " (bound " + num(bound) + ")");
+      }
+    }
+  }
+  std::string measured = std::to_string(checked) + " fits checked; lowest R^2: response " + num(min_resp) +
+                         ", recovery " + num(min_rec);
+  if (!failures.empty()) {
+    set(r, false, measured + "; " + std::to_string(failures.size()) + " below their bound: " + first_gaps(failures));
+    return r;
+  }
+  if (!missing.empty() || checked < 5) {
+    r.measured = "cannot tell: " + (missing.empty() ? std::string("fewer than 5 fits") : first_gaps(missing)) +
+                 (checked ? "; so far " + measured : "");
+    return r;
+  }
+  set(r, true, measured);
+  return r;
+}
+
+// Sec. 3.2: "recovery time k tau_r is almost directly proportional with Ca".
+ClaimResult claim_3_2_proportional(const ThesisResults& res, const std::string& case_name) {
+  ClaimResult r = claim("3.2", "k tau_r almost directly proportional to Ca (" + case_name + ")",
+                        "ch3_ca, case " + case_name,
+                        "exponent p of k tau_r ~ Ca^p (straight line in log-log) within [0.8, 1.2]; >= 4 values of Ca");
+  const ThesisCampaign& c = res.campaign("ch3_ca");
+  if (!have_campaign(r, c)) return r;
+  const Series s = series(c, case_name, "Ca", "recovery.k_tau_r");
+  if (!have_points(r, s, 4, "values of Ca with k tau_r")) return r;
+  const LineFit f = fit_power(s.xs(), s.ys());
+  set(r, f.ok && f.slope >= 0.8 && f.slope <= 1.2,
+      "p = " + num(f.slope) + " (log-log R^2 " + num(f.r_squared) + "); k tau_r: " + s.listing("Ca"));
+  return r;
+}
+
+// Sec. 3.2: "the normalized recovery time tau_r/tau_e is nearly constant for Ca >= 0.1".
+ClaimResult claim_3_2_constant(const ThesisResults& res, const std::string& case_name) {
+  ClaimResult r = claim("3.2", "tau_r/tau_e nearly constant for Ca >= 0.1 (" + case_name + ")", "ch3_ca, case " + case_name,
+                        "(max - min)/mean of tau_r/tau_e = k tau_r/(Ca V) over Ca >= 0.1 at most 0.2; >= 3 values of Ca");
+  const ThesisCampaign& c = res.campaign("ch3_ca");
+  if (!have_campaign(r, c)) return r;
+  Series s = series(c, case_name, "Ca", "recovery.k_tau_r", [](const ThesisMember& m) { return parameter(m, "Ca") >= 0.1 - 1e-12; });
+  for (auto& p : s.points) p.y /= p.x * parameter(*p.member, "V");
+  if (!have_points(r, s, 3, "values of Ca >= 0.1 with k tau_r")) return r;
+  const double spread = relative_spread(s.ys());
+  set(r, spread <= 0.2, "spread " + num(spread) + "; tau_r/tau_e: " + s.listing("Ca"));
+  return r;
+}
+
+// "Falls with x": the last value at most (1 - min_fall) of the first, and no step up by more than 5 %.
+struct Fall {
+  double fall = k_nan;  // 1 - last/first
+  bool monotone = true;
+};
+Fall fall_of(const Series& s) {
+  Fall f;
+  const auto y = s.ys();
+  f.fall = 1.0 - y.back() / y.front();
+  for (std::size_t i = 1; i < y.size(); ++i)
+    if (y[i] > 1.05 * y[i - 1]) f.monotone = false;
+  return f;
+}
+
+// Sec. 3.3: "A clear inverse relationship between k tau_r and E_b ... for both"; "the spherical
+// capsules' k tau_s has the same inverse relationship".
+ClaimResult claim_3_3_falls(const ThesisResults& res, const std::string& case_name, const std::string& column) {
+  const std::string t = column == "recovery.k_tau_r" ? "k tau_r" : "k tau_s";
+  ClaimResult r = claim("3.3", t + " falls with E_b (" + case_name + ")", "ch3_eb, case " + case_name,
+                        t + " at the largest E_b at most 0.7 x its value at the smallest E_b, no step up by more than 5 %; "
+                            ">= 3 values of E_b");
+  const ThesisCampaign& c = res.campaign("ch3_eb");
+  if (!have_campaign(r, c)) return r;
+  const Series s = series(c, case_name, "E_b", column);
+  if (!have_points(r, s, 3, "values of E_b with " + t)) return r;
+  const Fall f = fall_of(s);
+  set(r, f.fall >= 0.3 && f.monotone,
+      "falls by " + num(100 * f.fall) + " %" + (f.monotone ? "" : ", not monotone") + "; " + t + ": " + s.listing("E_b"));
+  return r;
+}
+
+// Sec. 3.3: "k tau_s undergoes only a slight, almost linear decline as E_b rises for circular capsules".
+ClaimResult claim_3_3_slight(const ThesisResults& res) {
+  ClaimResult r = claim("3.3", "k tau_s falls only slightly with E_b in 2D", "ch3_eb, case 2d",
+                        "k tau_s at the largest E_b between 0.70 and 1.02 x its value at the smallest E_b (falls by "
+                        "less than 30 %); >= 3 values of E_b");
+  const ThesisCampaign& c = res.campaign("ch3_eb");
+  if (!have_campaign(r, c)) return r;
+  const Series s = series(c, "2d", "E_b", "response.k_tau_s");
+  if (!have_points(r, s, 3, "values of E_b with k tau_s")) return r;
+  const Fall f = fall_of(s);
+  set(r, f.fall >= -0.02 && f.fall < 0.3, "falls by " + num(100 * f.fall) + " %; k tau_s: " + s.listing("E_b"));
+  return r;
+}
+
+// Sec. 3.4: "Both k tau_s and k tau_r have approximately linear relationships with V".
+ClaimResult claim_3_4_linear(const ThesisResults& res, const std::string& case_name) {
+  ClaimResult r = claim("3.4", "k tau_s and k tau_r linear in V, rising (" + case_name + ")", "ch3_v, case " + case_name,
+                        "linear: R^2 of a straight-line fit >= 0.95 and slope > 0, for each time; >= 4 values of V");
+  const ThesisCampaign& c = res.campaign("ch3_v");
+  if (!have_campaign(r, c)) return r;
+  bool ok = true;
+  std::string text;
+  for (const char* col : {"response.k_tau_s", "recovery.k_tau_r"}) {
+    const Series s = series(c, case_name, "V", col);
+    if (!have_points(r, s, 4, std::string("values of V with ") + bare_time(col))) return r;
+    const LineFit f = fit_line(s.xs(), s.ys());
+    ok = ok && f.ok && f.r_squared >= 0.95 && f.slope > 0;
+    text += (text.empty() ? "" : "; ") + bare_time(col) + ": slope " + num(f.slope) + ", R^2 " + num(f.r_squared) +
+            " (" + s.listing("V") + ")";
+  }
+  set(r, ok, text);
+  return r;
+}
+
+// Sec. 3.4: "As V -> 0 ... the characteristic times tend toward k tau_r ~ k tau_s".
+ClaimResult claim_3_4_small_V(const ThesisResults& res, const std::string& case_name) {
+  ClaimResult r = claim("3.4", "k tau_r ~ k tau_s as V -> 0 (" + case_name + ")", "ch3_v, case " + case_name,
+                        "k tau_r / k tau_s at the smallest V of the campaign within [0.75, 1.33]");
+  const ThesisCampaign& c = res.campaign("ch3_v");
+  if (!have_campaign(r, c)) return r;
+  const Series s = series(c, case_name, "V", "response.k_tau_s");
+  const Series q = series(c, case_name, "V", "recovery.k_tau_r");
+  if (!have_points(r, s, 1, "values of V with k tau_s") || !have_points(r, q, 1, "values of V with k tau_r")) return r;
+  if (s.points.front().x != q.points.front().x) {
+    r.measured = "cannot tell (members missing): the smallest V lacks one of the two times (k tau_s from V " +
+                 num(s.points.front().x) + ", k tau_r from V " + num(q.points.front().x) + ")";
+    return r;
+  }
+  const double ratio = q.points.front().y / s.points.front().y;
+  std::string text = "at V " + num(s.points.front().x) + ": k tau_s " + num(s.points.front().y) + ", k tau_r " +
+                     num(q.points.front().y) + ", ratio " + num(ratio);
+  if (s.points.back().x == q.points.back().x && s.points.size() > 1)
+    text += " (at V " + num(s.points.back().x) + ": ratio " + num(q.points.back().y / s.points.back().y) + ")";
+  set(r, ratio >= 0.75 && ratio <= 1.33, text);
+  return r;
+}
+
+// Sec. 3.5: "both k tau_s and k tau_r were virtually independent of ... eta for circular capsules".
+ClaimResult claim_3_5_2d(const ThesisResults& res) {
+  ClaimResult r = claim("3.5", "in 2D both times nearly independent of eta", "ch3_eta, case 2d",
+                        "(max - min)/mean over the eta sweep at most 0.1, for each time; >= 3 values of eta");
+  const ThesisCampaign& c = res.campaign("ch3_eta");
+  if (!have_campaign(r, c)) return r;
+  bool ok = true;
+  std::string text;
+  for (const char* col : {"response.k_tau_s", "recovery.k_tau_r"}) {
+    const Series s = series(c, "2d", "eta", col);
+    if (!have_points(r, s, 3, std::string("values of eta with ") + bare_time(col))) return r;
+    const double spread = relative_spread(s.ys());
+    ok = ok && spread <= 0.1;
+    text += (text.empty() ? "" : "; ") + bare_time(col) + ": spread " + num(spread) + " (" + s.listing("eta") + ")";
+  }
+  set(r, ok, text);
+  return r;
+}
+
+// Sec. 3.5: "in three dimensions, the characteristic times displayed a clear linear dependence on eta".
+ClaimResult claim_3_5_3d(const ThesisResults& res) {
+  ClaimResult r = claim("3.5", "in 3D both times linear in eta", "ch3_eta, case 3d",
+                        "linear: R^2 of a straight-line fit >= 0.95, slope > 0 and a rise of at least 20 % over the "
+                        "sweep, for each time; >= 4 values of eta");
+  const ThesisCampaign& c = res.campaign("ch3_eta");
+  if (!have_campaign(r, c)) return r;
+  bool ok = true;
+  std::string text;
+  for (const char* col : {"response.k_tau_s", "recovery.k_tau_r"}) {
+    const Series s = series(c, "3d", "eta", col);
+    if (!have_points(r, s, 4, std::string("values of eta with ") + bare_time(col))) return r;
+    const LineFit f = fit_line(s.xs(), s.ys());
+    const double rise = s.points.back().y / s.points.front().y - 1.0;
+    ok = ok && f.ok && f.r_squared >= 0.95 && f.slope > 0 && rise >= 0.2;
+    text += (text.empty() ? "" : "; ") + bare_time(col) + ": slope " + num(f.slope) + ", R^2 " + num(f.r_squared) +
+            ", rise " + num(100 * rise) + " % (" + s.listing("eta") + ")";
+  }
+  set(r, ok, text);
+  return r;
+}
+
+// ---------------------------------------------------------------- Chapter 4 (biconcave)
+
+}  // namespace capsule::analysis::claims

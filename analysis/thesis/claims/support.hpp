@@ -1,0 +1,255 @@
+#pragma once
+// What every claim of the dissertation comparison is built from: a claim's header, the members
+// of a case as a series of (parameter, fitted time), the checks that turn missing members into
+// "cannot tell", and the members whose shear stop never came. Each chapter's claims are in
+// chapter2.cpp ... chapter5.cpp beside this file, declared in chapters.hpp.
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/report/report_context.hpp"
+#include "analysis/fit/resolution_ladder.hpp"
+#include "analysis/report/scene_parameter.hpp"
+#include "analysis/thesis/table2_compare.hpp"
+#include "analysis/thesis/claims.hpp"
+
+namespace capsule::analysis::claims {
+
+// Undeformed D_xy of the biconcave capsules (docs/conventions.md "D_xy").
+constexpr double k_D_biconcave_2d = 0.812;
+constexpr double k_D_biconcave_3d = 0.51;
+
+inline std::string num(double x) { return short_number(x); }
+
+inline double parameter(const ThesisMember& m, const std::string& name) {
+  const auto it = m.parameters.find(name);
+  return it == m.parameters.end() ? k_nan : it->second;
+}
+
+struct Point {
+  double x = 0.0, y = 0.0;
+  const ThesisMember* member = nullptr;
+};
+
+// One fitted time of the members of a case against a parameter, sorted by x, with the
+// members that gave no number and why.
+struct Series {
+  std::vector<Point> points;
+  std::vector<std::string> gaps;
+  std::vector<double> xs() const {
+    std::vector<double> v;
+    for (const auto& p : points) v.push_back(p.x);
+    return v;
+  }
+  std::vector<double> ys() const {
+    std::vector<double> v;
+    for (const auto& p : points) v.push_back(p.y);
+    return v;
+  }
+  std::string listing(const std::string& x_name) const {
+    std::string s;
+    for (const auto& p : points) s += (s.empty() ? "" : ", ") + x_name + " " + num(p.x) + ": " + num(p.y);
+    return s;
+  }
+};
+
+using Keep = std::function<bool(const ThesisMember&)>;
+// Why a member cannot stand for the text's point ("" when it can): it is listed among the gaps.
+using Skip = std::function<std::string(const ThesisMember&)>;
+
+inline Series series(const ThesisCampaign& c, const std::string& case_name, const std::string& x, const std::string& column,
+              const Keep& keep = {}, const Skip& skip = {}) {
+  Series s;
+  for (const ThesisMember* m : c.in_case(case_name)) {
+    if (keep && !keep(*m)) continue;
+    if (skip) {
+      if (const std::string why = skip(*m); !why.empty()) {
+        s.gaps.push_back(m->slug + ": " + why);
+        continue;
+      }
+    }
+    const double xv = parameter(*m, x);
+    const ColumnValue v = column_value(m->fits, column);
+    if (std::isnan(xv)) s.gaps.push_back(m->slug + ": " + x + " not recorded");
+    else if (!v.parameter) s.gaps.push_back(m->slug + ": " + v.reason);
+    else s.points.push_back({xv, v.parameter->value, m});
+  }
+  std::sort(s.points.begin(), s.points.end(), [](const Point& a, const Point& b) { return a.x < b.x; });
+  return s;
+}
+
+inline ClaimResult claim(std::string section, std::string statement, std::string campaign, std::string criterion) {
+  ClaimResult r;
+  r.section = std::move(section);
+  r.statement = std::move(statement);
+  r.campaign = std::move(campaign);
+  r.criterion = std::move(criterion);
+  return r;
+}
+
+inline std::string first_gaps(const std::vector<std::string>& gaps) {
+  std::string s;
+  for (std::size_t i = 0; i < gaps.size() && i < 3; ++i) s += (i ? "; " : "") + gaps[i];
+  if (gaps.size() > 3) s += "; and " + std::to_string(gaps.size() - 3) + " more";
+  return s;
+}
+
+// False (and r.measured says why) when the campaign is not there.
+inline bool have_campaign(ClaimResult& r, const ThesisCampaign& c) {
+  if (c.found) return true;
+  r.measured = "cannot tell: " + c.missing;
+  return false;
+}
+
+// False (and r.measured says why) when the series has fewer than n points.
+inline bool have_points(ClaimResult& r, const Series& s, std::size_t n, const std::string& what) {
+  if (s.points.size() >= n) return true;
+  r.measured = "cannot tell (members missing): " + std::to_string(s.points.size()) + " " + what + ", need " +
+               std::to_string(n);
+  if (!s.gaps.empty()) r.measured += " (" + first_gaps(s.gaps) + ")";
+  return false;
+}
+
+inline void set(ClaimResult& r, bool ok, const std::string& measured) {
+  r.verdict = ok ? Verdict::agrees : Verdict::differs;
+  r.measured = measured;
+}
+
+// Cannot tell for one of several parts: appends its reason and returns false.
+inline bool part_missing(std::string& why, const std::string& reason) {
+  why += (why.empty() ? "" : "; ") + reason;
+  return false;
+}
+
+// Secs. 4.1.1-4.1.2 fit recoveries that start at an inclination (theta = -pi/3, pi/6) or a
+// phase angle (beta = 0.49): a member whose shear was to end there but ran to its cap max_kt
+// recovers from another state and does not stand for the text's point. "" when its stop came,
+// when the shear ends otherwise, or when the member file is not there to tell (its fits.json
+// entry is judged as recorded).
+inline std::string missed_stop(const ThesisResults& res, const ThesisMember& m) {
+  std::string why;
+  const auto data = res.member_data(m, why, true);
+  if (!data) return "";
+  const nlohmann::json& scene = data->attributes.contains("scene") ? data->attributes["scene"] : nlohmann::json();
+  if (!scene.is_object() || !scene.contains("protocol") || !scene["protocol"].contains("shear")) return "";
+  const nlohmann::json& shear = scene["protocol"]["shear"];
+  const std::string until = shear.value("until", "");
+  if (until != "theta" && until != "beta") return "";
+  const double cap = shear.value("max_kt", k_nan);
+  const auto t = data->markers.find("t_stop");
+  const double t_stop = t == data->markers.end() ? k_nan : t->second;
+  const std::string target = until + " = " + num(shear.value("value", k_nan));
+  if (std::isnan(t_stop)) return "the shear never stopped (no t_stop); it was to stop at " + target;
+  // The shear's last row lies within a step of its cap.
+  if (!std::isnan(cap) && t_stop >= cap - 1e-6 * std::max(1.0, cap))
+    return "the shear ran to its cap kt " + num(cap) + " without reaching " + target + ", so the recovery is not the text's";
+  return "";
+}
+
+// A 2D biconcave capsule that folds as it tumbles has a non-convex outline whose chords through
+// the centroid, and so D_xy (37), jump as the chord along the major axis leaves a lobe: no
+// smooth model fits such a series. Says so when D_xy jumps by more than 0.2 within one output
+// interval at a rate above 5 per kt (ten times the fastest recovery the text reports: 0.4 of
+// D_xy over 3 tau_R1 = 0.85 kt) in the first kt after the stop; "" otherwise.
+inline std::string folded_note(const ThesisResults& res, const ThesisMember& m) {
+  std::string why;
+  const auto data = res.member_data(m, why, true);
+  if (!data || !data->series.count("kt") || !data->series.count("D_xy") || !data->markers.count("t_stop")) return "";
+  const auto& kt = data->series.at("kt");
+  const auto& D = data->series.at("D_xy");
+  const double t_stop = data->markers.at("t_stop");
+  double jump = 0.0, at = k_nan, D_stop = k_nan;
+  for (std::size_t i = 1; i < kt.size() && i < D.size(); ++i) {
+    if (kt[i - 1] < t_stop - 1e-9 || kt[i] > t_stop + 1.0) continue;
+    if (std::isnan(D_stop)) D_stop = D[i - 1];
+    const double d = std::abs(D[i] - D[i - 1]), dt = kt[i] - kt[i - 1];
+    if (d > 0.2 && dt > 0 && d / dt > 5.0 && d > jump) jump = d, at = kt[i] - t_stop;
+  }
+  if (jump == 0.0) return "";
+  return " (D_xy " + num(D_stop) + " at the stop jumps by " + num(jump) + " at kt_stop + " + num(at) +
+         ": a folded outline, whose chords (37) are discontinuous)";
+}
+
+inline Skip missed_stop_in(const ThesisResults& res) {
+  return [&res](const ThesisMember& m) { return missed_stop(res, m); };
+}
+
+inline bool is_refused_for_r2(const FitResult& f) { return !f.ok && f.reason.rfind("the model does not describe the data", 0) == 0; }
+
+// ---------------------------------------------------------------- Chapter 3 (circle, sphere)
+
+// A member file's scene value at a JSON pointer (power_law.K, ...), NaN when absent.
+inline double scene_value(const io::MemberData& d, const std::string& pointer) {
+  if (!d.attributes.contains("scene")) return k_nan;
+  const SceneValue v = scene_parameter(d.attributes["scene"], "value", {{"value", pointer}});
+  return v.found ? v.value : k_nan;
+}
+
+struct ShearMember {
+  const ThesisMember* member = nullptr;
+  std::optional<io::MemberData> data;
+  double D_at_1 = k_nan, D_stop = k_nan;
+};
+
+// A member's D_xy at kt 1 and at the stop (its last row without a t_stop); nullopt with `why`
+// set when the file or its kt / D_xy series is missing.
+inline std::optional<ShearMember> shear_member(const ThesisResults& res, const ThesisMember& m, std::string& why) {
+  ShearMember s;
+  s.member = &m;
+  s.data = res.member_data(m, why);
+  if (!s.data) return std::nullopt;
+  const auto kt_it = s.data->series.find("kt"), d_it = s.data->series.find("D_xy");
+  if (kt_it == s.data->series.end() || d_it == s.data->series.end()) {
+    why = m.slug + ": no kt / D_xy series";
+    return std::nullopt;
+  }
+  const auto& kt = kt_it->second;
+  const auto& D = d_it->second;
+  s.D_at_1 = interpolate_series(kt, D, 1.0);
+  const double t_stop = s.data->markers.count("t_stop") ? s.data->markers.at("t_stop") : k_nan;
+  s.D_stop = std::isfinite(t_stop) ? interpolate_series(kt, D, t_stop) : k_nan;
+  if (std::isnan(s.D_stop) && !D.empty() && !std::isfinite(t_stop)) s.D_stop = D.back();
+  return s;
+}
+
+inline std::vector<ShearMember> shear_members(const ThesisResults& res, const ThesisCampaign& c, const std::string& case_name,
+                                       std::string& why) {
+  std::vector<ShearMember> out;
+  for (const ThesisMember* m : c.in_case(case_name)) {
+    std::string w;
+    if (auto s = shear_member(res, *m, w)) out.push_back(std::move(*s));
+    else why += (why.empty() ? "" : "; ") + w;
+  }
+  return out;
+}
+
+// Sec. 5.2: "this power law method ... is independent of the Lagrangian grid" (Fig. 59).
+// D_xy at the stop of a case's members differs by at most `bound` of its mean over `key`'s
+// values (at least `needed` members): mesh independence (Figs. 10, 59), G independence (Fig. 12).
+inline void judge_spread(const ThesisResults& res, ClaimResult& r, const std::string& campaign, const std::string& case_name,
+                  const std::string& key_pointer, const std::string& key_label, double bound, std::size_t needed) {
+  const ThesisCampaign& c = res.campaign(campaign);
+  if (!have_campaign(r, c)) return;
+  std::string why;
+  const auto ms = shear_members(res, c, case_name, why);
+  if (ms.size() < needed) {
+    r.measured = "cannot tell (members missing): " + std::to_string(ms.size()) + " " + key_label +
+                 " values with a member file, need " + std::to_string(needed) +
+                 (why.empty() ? std::string("") : " (" + why + ")");
+    return;
+  }
+  std::vector<double> D;
+  std::string text;
+  for (const auto& m : ms) {
+    D.push_back(m.D_stop);
+    text += (text.empty() ? "" : ", ") + key_label + " " + num(scene_value(*m.data, key_pointer)) + ": " + num(m.D_stop);
+  }
+  const double spread = relative_spread(D);
+  set(r, spread <= bound, "spread " + num(spread) + "; D_xy at the stop: " + text);
+}
+
+}  // namespace capsule::analysis::claims

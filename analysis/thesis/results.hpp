@@ -1,0 +1,79 @@
+#pragma once
+// The shipped results THESIS.md is written from: results/<campaign>/report/fits.json of
+// every dissertation campaign, and the member files it names. A campaign without a
+// fits.json, or a member whose file is gone, is recorded with why, never skipped silently.
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "analysis/fit/member_fits.hpp"
+#include "solver/io/member_file.hpp"
+
+namespace capsule::analysis {
+
+struct ThesisMember {
+  std::string id, slug, case_name, status;    // status: the member file's, as fits.json recorded it
+  std::map<std::string, double> parameters;   // as fits.json recorded them (Ca, E_b, V, eta, table x's)
+  MemberFits fits;                            // parsed from fits.json
+  std::string recorded_path;                  // fits.json's "path"
+  std::string file;                           // resolved member.h5, "" when not found
+  // A member of a resolution ladder with a finer member of the same physical point shipped:
+  // the claims judge each point at its finest shipped level, as Table 2 takes the finest
+  // level of a bilinear ladder. Its `finer` names that member.
+  bool coarse = false;
+  std::string finer;
+};
+
+struct ThesisCampaign {
+  std::string name;
+  bool found = false;
+  std::string missing;  // why not found: "campaign X not run (no <dir>/X/report/fits.json)"
+  nlohmann::json fits;
+  std::vector<ThesisMember> members;
+  // The campaign's resolution ladder keys (analysis ladder[].key, bilinear.ladder) with
+  // their spacing ("1/x", "2^-x", "x"), read from fits.json's analysis block.
+  std::map<std::string, std::string> ladder_keys;
+
+  // Members of one case ("" = every case), each slug once (a member shared by several
+  // cases is listed in fits.json once per case), without the coarse members of a ladder.
+  std::vector<const ThesisMember*> in_case(const std::string& case_name) const;
+  // The same with the coarse members too.
+  std::vector<const ThesisMember*> in_case_all_levels(const std::string& case_name) const;
+  // "resolution.a: 7 (6 members), 5 (4 members)": the ladder levels the claims judge;
+  // "" without a ladder.
+  std::string judged_levels() const;
+};
+
+class ThesisResults {
+ public:
+  explicit ThesisResults(std::string results_dir);
+  const std::string& results_dir() const { return dir_; }
+  // Loaded on first use and kept. Throws std::runtime_error for a fits.json that is not valid JSON.
+  const ThesisCampaign& campaign(const std::string& name) const;
+  // The member file's contents; nullopt with `why` set when missing, unreadable or not
+  // complete. With accept_unstable, a member that ended unstable is returned too (its rows
+  // up to the blow-up are results: the text's own 3D recoveries end in instability).
+  std::optional<io::MemberData> member_data(const ThesisMember& m, std::string& why,
+                                            bool accept_unstable = false) const;
+
+ private:
+  std::string dir_;
+  mutable std::map<std::string, ThesisCampaign> campaigns_;
+};
+
+// Where a member file recorded as `recorded` lives for a campaign whose results folder
+// is `campaign_root`: a relative path is relative to that folder (shipped results); an
+// absolute one that no longer exists (a clone elsewhere) is looked for as
+// <campaign_root>/members/<its folder>/<its name>. "" when neither exists.
+std::string resolve_member_file(const std::string& campaign_root, const std::string& recorded);
+
+// Marks the coarse members of a campaign's ladders: members of one physical point (the same
+// case and the same recorded parameters apart from the ladder keys) at a coarser level of a
+// key than another member of that point. A member whose fits.json entry lacks the key's
+// value is never coarse.
+void mark_coarse_members(ThesisCampaign& c);
+
+}  // namespace capsule::analysis
