@@ -1,5 +1,5 @@
 #pragma once
-// FNV-1a (64 bit): the toolkit's one hash. Member ids (study/member_id.hpp), the binary's
+// FNV-1a (64 bit): the toolkit's one hash. Member ids (study/campaign/member_id.hpp), the binary's
 // fingerprint in restart points, and the content hash of member files use it. It detects
 // damage and accidental change; it is not meant to resist someone forging a file.
 #include <cstddef>

@@ -10,7 +10,7 @@
 
 #include <unistd.h>
 
-#include "analysis/compare/compare.hpp"
+#include "analysis/compare/campaign_compare.hpp"
 #include "analysis/fit/fit_result.hpp"
 #include "analysis/compare/member_compare.hpp"
 #include "analysis/report/report.hpp"

@@ -10,7 +10,7 @@
 
 #include <unistd.h>
 
-#include "analysis/compare/compare.hpp"
+#include "analysis/compare/campaign_compare.hpp"
 #include "analysis/thesis/table2_compare.hpp"
 #include "analysis/report/plot_script.hpp"
 #include "analysis/report/report.hpp"

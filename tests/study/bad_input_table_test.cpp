@@ -7,8 +7,8 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 
-#include "study/campaign.hpp"
-#include "study/shell_quote.hpp"
+#include "study/campaign/campaign.hpp"
+#include "study/run/shell_quote.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace capsule::study;

@@ -1,9 +1,9 @@
 // Every campaign shipped in campaigns/ parses, expands and plans without error.
 #include <catch2/catch.hpp>
 
-#include "study/campaign_survey.hpp"
-#include "study/cost_estimate.hpp"
-#include "study/plan_table.hpp"
+#include "study/state/campaign_survey.hpp"
+#include "study/plan/cost_estimate.hpp"
+#include "study/plan/plan_table.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace capsule::study;

@@ -1,8 +1,8 @@
 // `study compare` warns when a campaign's report is older than one of its member files.
 #include <catch2/catch.hpp>
 
-#include "study/campaign_survey.hpp"
-#include "study/report_freshness.hpp"
+#include "study/state/campaign_survey.hpp"
+#include "study/report/report_freshness.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace capsule::study;

@@ -1,7 +1,7 @@
 // jobs x threads: many single-threaded 2D members at once; a 3D member takes every core.
 #include <catch2/catch.hpp>
 
-#include "study/concurrency.hpp"
+#include "study/plan/concurrency.hpp"
 
 using namespace capsule::study;
 

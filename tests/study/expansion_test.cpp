@@ -2,9 +2,9 @@
 #include <catch2/catch.hpp>
 #include <set>
 
-#include "study/campaign.hpp"
-#include "study/expansion.hpp"
-#include "study/member_id.hpp"
+#include "study/campaign/campaign.hpp"
+#include "study/campaign/expansion.hpp"
+#include "study/campaign/member_id.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace capsule::study;

@@ -1,7 +1,7 @@
 // A failed and an unstable member never stop the others; status names both with reasons.
 #include <catch2/catch.hpp>
 
-#include "study/campaign_survey.hpp"
+#include "study/state/campaign_survey.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace capsule::study;

@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <set>
 
-#include "study/campaign_survey.hpp"
-#include "study/joblog.hpp"
+#include "study/state/campaign_survey.hpp"
+#include "study/run/joblog.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace capsule::study;

@@ -9,12 +9,12 @@
 #include <hdf5.h>
 
 #include "build_info.hpp"
-#include "study/campaign_survey.hpp"
-#include "study/provenance.hpp"
-#include "study/results_layout.hpp"
-#include "study/run_lock.hpp"
-#include "study/shell_quote.hpp"
-#include "study/status_json.hpp"
+#include "study/state/campaign_survey.hpp"
+#include "study/run/provenance.hpp"
+#include "study/state/results_layout.hpp"
+#include "study/run/run_lock.hpp"
+#include "study/run/shell_quote.hpp"
+#include "study/state/status_json.hpp"
 #include "tests/study/study_test_support.hpp"
 #include "tests/support/hdf5_damage.hpp"
 

@@ -6,8 +6,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "study/campaign.hpp"
-#include "study/expansion.hpp"
+#include "study/campaign/campaign.hpp"
+#include "study/campaign/expansion.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace capsule::study;

@@ -1,9 +1,9 @@
 // Malformed campaign files are refused with a message naming the file, the place and the problem.
 #include <catch2/catch.hpp>
 
-#include "study/campaign.hpp"
-#include "study/campaign_error.hpp"
-#include "study/expansion.hpp"
+#include "study/campaign/campaign.hpp"
+#include "study/campaign/campaign_error.hpp"
+#include "study/campaign/expansion.hpp"
 
 using namespace capsule::study;
 

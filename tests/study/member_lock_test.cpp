@@ -1,5 +1,5 @@
 // A member runs at most once at a time and never after it is complete, whichever engine starts
-// it (study/member_lock.hpp, study/member_run.hpp); a stop by signal leaves a restart point that
+// it (study/run/member_lock.hpp, study/run/member_run.hpp); a stop by signal leaves a restart point that
 // the next run continues from.
 #include <catch2/catch.hpp>
 
@@ -11,10 +11,10 @@
 #include <chrono>
 #include <thread>
 
-#include "study/campaign_survey.hpp"
-#include "study/member_lock.hpp"
-#include "study/run_record.hpp"
-#include "study/shell_quote.hpp"
+#include "study/state/campaign_survey.hpp"
+#include "study/run/member_lock.hpp"
+#include "study/state/run_record.hpp"
+#include "study/run/shell_quote.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace capsule::study;

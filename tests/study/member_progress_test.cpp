@@ -9,8 +9,8 @@
 
 #include "solver/io/member_file.hpp"
 #include "solver/scene/scene.hpp"
-#include "study/campaign_survey.hpp"
-#include "study/plan_table.hpp"
+#include "study/state/campaign_survey.hpp"
+#include "study/plan/plan_table.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace capsule::study;

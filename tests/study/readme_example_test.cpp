@@ -1,7 +1,7 @@
 // README's campaign example (a ```jsonc block with // and /* */ comments) parses as written.
 #include <catch2/catch.hpp>
 
-#include "study/campaign.hpp"
+#include "study/campaign/campaign.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace capsule::study;

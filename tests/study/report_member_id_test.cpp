@@ -2,7 +2,7 @@
 // member id) is skipped and named, as `study status` reports it failed.
 #include <catch2/catch.hpp>
 
-#include "study/campaign_survey.hpp"
+#include "study/state/campaign_survey.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace capsule::study;

@@ -1,7 +1,7 @@
 // `study report` hands the finished members to the analysis and writes results/<campaign>/report.
 #include <catch2/catch.hpp>
 
-#include "study/campaign_survey.hpp"
+#include "study/state/campaign_survey.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace capsule::study;

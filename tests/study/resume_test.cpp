@@ -9,8 +9,8 @@
 #include <thread>
 #include <unistd.h>
 
-#include "study/campaign.hpp"
-#include "study/campaign_survey.hpp"
+#include "study/campaign/campaign.hpp"
+#include "study/state/campaign_survey.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace capsule::study;

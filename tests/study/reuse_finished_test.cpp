@@ -4,8 +4,8 @@
 // --no-reuse runs every member.
 #include <catch2/catch.hpp>
 
-#include "study/campaign_survey.hpp"
-#include "study/joblog.hpp"
+#include "study/state/campaign_survey.hpp"
+#include "study/run/joblog.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace capsule::study;

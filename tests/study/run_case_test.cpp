@@ -3,8 +3,8 @@
 // KEY=VALUE`: only the members with that scene value (member_filter.hpp).
 #include <catch2/catch.hpp>
 
-#include "study/campaign_survey.hpp"
-#include "study/member_filter.hpp"
+#include "study/state/campaign_survey.hpp"
+#include "study/campaign/member_filter.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace capsule::study;

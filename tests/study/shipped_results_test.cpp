@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "study/campaign_survey.hpp"
+#include "study/state/campaign_survey.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace capsule::study;

@@ -1,11 +1,11 @@
 // Slurm export: the sbatch script is valid bash, and its task i runs member i.
 #include <catch2/catch.hpp>
 
-#include "study/campaign_survey.hpp"
-#include "study/shell_quote.hpp"
-#include "study/script_path.hpp"
-#include "study/slurm_export.hpp"
-#include "study/slurm_resources.hpp"
+#include "study/state/campaign_survey.hpp"
+#include "study/run/shell_quote.hpp"
+#include "study/run/script_path.hpp"
+#include "study/slurm/slurm_export.hpp"
+#include "study/slurm/slurm_resources.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace capsule::study;

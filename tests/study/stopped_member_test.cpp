@@ -3,7 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "solver/io/member_file.hpp"
-#include "study/campaign_survey.hpp"
+#include "study/state/campaign_survey.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace capsule::study;

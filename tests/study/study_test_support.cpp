@@ -7,7 +7,7 @@
 #include <sstream>
 #include <unistd.h>
 
-#include "study/shell_quote.hpp"
+#include "study/run/shell_quote.hpp"
 
 namespace capsule::study::testing {
 

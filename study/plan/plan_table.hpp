@@ -1,0 +1,31 @@
+#pragma once
+// `study plan`: one line per member (index, state, directory, swept parameters, cost: nodes,
+// kt, node-steps, estimated wall seconds and memory) and the totals, with the campaign's
+// estimated wall time on this machine (jobs x threads as `study run` would choose them).
+// Changes nothing. Members are expanded, inspected and printed one at a time
+// (for_each_member, in two passes: measured speeds first, then the rows), so a
+// 10^6-member grid plans in bounded memory.
+#include <ostream>
+
+#include "study/campaign/campaign.hpp"
+#include "study/state/campaign_survey.hpp"
+#include "study/plan/cost_estimate.hpp"
+#include "study/plan/measured_speed.hpp"
+#include "study/state/results_layout.hpp"
+
+namespace capsule::study {
+
+void print_plan(const Campaign& campaign, const ResultsLayout& layout, std::ostream& out);
+
+// Estimated wall seconds of one member with `threads` threads, corrected by measured speed.
+double estimated_member_seconds(const CostEstimate& cost, int dim, int threads, const MeasuredSpeed& speed);
+
+struct CampaignEstimate {
+  double wall_seconds = 0;    // of the members that are not complete, with the run's concurrency
+  double member_seconds = 0;  // their sum
+  int jobs = 1, threads = 1;
+  std::size_t pending = 0;
+};
+CampaignEstimate estimate_campaign(const CampaignSurvey& survey, const MeasuredSpeed& speed, int cores);
+
+}  // namespace capsule::study

@@ -1,0 +1,147 @@
+#include "study/report/analysis_commands.hpp"
+
+#include <fcntl.h>
+#include <stdio.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "study/state/exit_status.hpp"
+#include "study/report/report_freshness.hpp"
+
+#include "analysis/compare/campaign_compare.hpp"
+#include "analysis/thesis/table2_compare.hpp"
+#include "analysis/report/report.hpp"
+#include "analysis/thesis/report.hpp"
+
+namespace capsule::study {
+
+namespace fs = std::filesystem;
+
+
+namespace {
+
+// Puts the finished staging folder where the report lives: one atomic exchange where the
+// filesystem has it (renameat2), else two renames; the previous report is removed after.
+void swap_in(const fs::path& staging, const fs::path& report) {
+  if (!fs::exists(report)) {
+    fs::rename(staging, report);
+    return;
+  }
+  if (::renameat2(AT_FDCWD, staging.c_str(), AT_FDCWD, report.c_str(), RENAME_EXCHANGE) == 0) {
+    fs::remove_all(staging);  // now holds the previous report
+    return;
+  }
+  const fs::path previous = report.string() + ".previous." + std::to_string(::getpid());
+  fs::rename(report, previous);
+  fs::rename(staging, report);
+  fs::remove_all(previous);
+}
+
+}  // namespace
+
+int report_campaign(const CampaignSurvey& survey, const ReportOptions& options, std::ostream& out) {
+  const fs::path report_dir = survey.layout.report_dir();
+  // Written into a staging folder and swapped in whole: a report is never half of one, and a
+  // run that refuses leaves the previous report as it was.
+  const fs::path staging = report_dir.string() + ".staging." + std::to_string(::getpid());
+  analysis::ReportRequest request;
+  request.campaign_name = survey.campaign.name;
+  request.campaign_file = survey.campaign.source;
+  request.out_dir = staging.string();
+  request.analysis = survey.campaign.analysis;
+  std::size_t missing = 0;
+  std::vector<std::string> unreadable;  // "member: reason"
+  for (std::size_t i = 0; i < survey.members.size(); ++i) {
+    const Member& m = survey.members[i];
+    const MemberPaths p = survey.layout.member(m);
+    if (!fs::exists(p.h5)) {
+      ++missing;
+      continue;  // never run, or failed without a file: nothing to analyse
+    }
+    if (survey.conditions[i].state == MemberState::unreadable) {
+      unreadable.push_back(m.dir_name() + ": " + survey.conditions[i].reason);
+      continue;
+    }
+    // The member's own file only: inspect_member checks its member_id (a file copied from
+    // another campaign, or made by older physics, is "failed", as in `study status`).
+    if (survey.conditions[i].state == MemberState::failed) {
+      out << "skipped " << m.dir_name() << ": " << survey.conditions[i].reason << "\n";
+      continue;
+    }
+    // A member shared by several cases is analysed once per case.
+    request.members.push_back(analysis::MemberRef{m.id, m.slug, p.h5.string(), m.case_name, m.scene});
+    for (const auto& other : m.other_cases)
+      request.members.push_back(analysis::MemberRef{m.id, m.slug, p.h5.string(), other, m.scene});
+  }
+  if (missing > 0)
+    out << missing << " of " << survey.members.size() << " members have no member file yet (see `study status`)\n";
+  fs::remove_all(staging);
+  analysis::ReportSummary summary;
+  try {
+    summary = analysis::write_report(request);
+  } catch (...) {
+    std::error_code ec;
+    fs::remove_all(staging, ec);
+    throw;
+  }
+  for (const auto& u : summary.unreadable)
+    if (std::find(unreadable.begin(), unreadable.end(), u) == unreadable.end()) unreadable.push_back(u);
+  if (!unreadable.empty()) {
+    for (const auto& u : unreadable) out << "cannot read " << u << "\n";
+    if (!options.partial) {
+      fs::remove_all(staging);
+      out << "report not written: " << unreadable.size() << " member file" << (unreadable.size() == 1 ? "" : "s")
+          << " cannot be read; " << (fs::exists(report_dir) ? "the previous report is kept" : "there is no report")
+          << " (--partial writes one without them and says so in it)\n";
+      return exit_members_failed;
+    }
+    std::string note = "# This report is partial\n\nWritten with `study report --partial`: these member files could "
+                       "not be read and are not in it.\n\n";
+    for (const auto& u : unreadable) note += "- " + u + "\n";
+    write_file_atomically(staging / "PARTIAL.md", note);
+    summary.files.push_back((staging / "PARTIAL.md").string());
+  }
+  swap_in(staging, report_dir);
+  for (auto f : summary.files) {
+    if (f.rfind(staging.string(), 0) == 0) f = report_dir.string() + f.substr(staging.string().size());
+    out << "wrote " << f << "\n";
+  }
+  if (summary.figures_skipped) {
+    std::string note = summary.figures_note;
+    if (const auto at = note.find(staging.string()); at != std::string::npos)
+      note.replace(at, staging.string().size(), report_dir.string());
+    out << "figures skipped: " << note << "\n";
+  }
+  return unreadable.empty() ? members_exit_code(survey) : exit_members_failed;
+}
+
+int compare_campaign_files(const std::vector<std::string>& campaign_files, bool against_table2,
+                           const fs::path& results_dir, std::ostream& out) {
+  std::vector<analysis::CompareEntry> entries;
+  std::string joined;
+  for (const auto& file : campaign_files) {
+    const CampaignSurvey survey = survey_campaign(file, results_dir);
+    if (const auto warning = stale_report_warning(survey)) out << *warning << "\n";
+    const Campaign& c = survey.campaign;
+    entries.push_back({c.name, survey.layout.report_dir().string()});
+    joined += (joined.empty() ? "" : "_vs_") + c.name;
+  }
+  const fs::path out_dir = fs::absolute(results_dir) / "compare" / joined;
+  fs::create_directories(out_dir);
+  return analysis::compare_campaigns(entries, out, out_dir.string(),
+                                     against_table2 ? analysis::CompareSection(analysis::table2_comparison)
+                                                    : analysis::CompareSection());
+}
+
+int write_thesis_comparison(const fs::path& results_dir, const fs::path& out_file, std::ostream& out) {
+  const analysis::ThesisSummary s = analysis::write_thesis(results_dir.string(), out_file.string());
+  out << "wrote " << s.file << "\nclaims: " << s.agrees << " agree, " << s.differs << " differ, " << s.cannot_tell
+      << " cannot tell\nTable 2 coefficients: " << s.coefficients_overlap << " overlap, " << s.coefficients_disjoint
+      << " do not, " << s.coefficients_unknown << " cannot tell\n";
+  return 0;
+}
+
+
+}  // namespace capsule::study

@@ -1,0 +1,328 @@
+#include "study/run/campaign_runner.hpp"
+#include "study/campaign/campaign_error.hpp"
+
+#include <algorithm>
+
+#include <cerrno>
+#include <cstdlib>
+#include <chrono>
+#include <csignal>
+#include <cstring>
+#include <fcntl.h>
+#include <fstream>
+#include <stdexcept>
+#include <sys/file.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <functional>
+#include <map>
+#include <set>
+#include <thread>
+#include <vector>
+
+#include "build_info.hpp"
+#include "study/run/campaign_progress.hpp"
+#include "study/run/capsule_binary.hpp"
+#include "study/plan/concurrency.hpp"
+#include "study/state/exit_status.hpp"
+#include "study/state/member_reuse.hpp"
+#include "study/run/joblog.hpp"
+#include "study/campaign/member_filter.hpp"
+#include "study/run/member_wrapper.hpp"
+#include "study/run/provenance.hpp"
+#include "study/run/run_lock.hpp"
+#include "study/state/run_record.hpp"
+#include "study/run/script_path.hpp"
+
+namespace capsule::study {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+volatile sig_atomic_t child_pid = 0;
+
+// SIGTERM to study is passed on to GNU Parallel (which then stops starting members and
+// ends), so `kill <study pid>` still ends in a summary.
+extern "C" void forward_sigterm(int) {
+  if (child_pid > 0) ::kill(static_cast<pid_t>(child_pid), SIGTERM);
+}
+
+// Runs argv (no shell) and waits. Ctrl-C reaches GNU Parallel through the terminal's
+// process group; study ignores it meanwhile so it can still print the summary.
+int run_and_wait(const std::vector<std::string>& argv, const std::function<void(long)>& started,
+                 const std::function<void()>& every_second) {
+  std::vector<char*> args;
+  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  struct sigaction ignore {}, forward {}, old_int {}, old_term {};
+  ignore.sa_handler = SIG_IGN;
+  forward.sa_handler = forward_sigterm;
+  sigaction(SIGINT, &ignore, &old_int);
+  sigaction(SIGTERM, &forward, &old_term);
+  const pid_t pid = ::fork();
+  if (pid < 0) throw std::runtime_error(std::string("fork failed: ") + std::strerror(errno));
+  if (pid == 0) {
+    sigaction(SIGINT, &old_int, nullptr);
+    sigaction(SIGTERM, &old_term, nullptr);
+    // GNU Parallel builds the command it sends over ssh around $SHELL; with SHELL unset
+    // (cron, CI, `env -i`) every remote member fails at once. /bin/sh is what it would pick.
+    if (std::getenv("SHELL") == nullptr) ::setenv("SHELL", "/bin/sh", 1);
+    ::execvp(args[0], args.data());
+    std::fprintf(stderr, "study: cannot run %s: %s\n", args[0], std::strerror(errno));
+    ::_exit(127);
+  }
+  child_pid = pid;
+  started(static_cast<long>(pid));
+  int status = 0;
+  // Poll, so the campaign's progress line can be redrawn while the members run.
+  for (int ticks = 0;; ++ticks) {
+    const pid_t r = ::waitpid(pid, &status, WNOHANG);
+    if (r == pid) break;
+    if (r < 0 && errno != EINTR) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    if (ticks % 10 == 9 && every_second) every_second();
+  }
+  child_pid = 0;
+  sigaction(SIGINT, &old_int, nullptr);
+  sigaction(SIGTERM, &old_term, nullptr);
+  if (WIFEXITED(status)) return WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
+  return 1;
+}
+
+}  // namespace
+
+void print_status(const CampaignSurvey& survey, std::ostream& out) {
+  out << "campaign " << survey.campaign.name << ": " << survey.members.size() << " members in "
+      << survey.layout.root.string() << "\n";
+  for (auto state : kAllMemberStates)
+    out << "  " << state_name(state) << ": " << survey.count(state) << "\n";
+  for (std::size_t i = 0; i < survey.members.size(); ++i) {
+    const auto& c = survey.conditions[i];
+    if (c.state == MemberState::complete || c.state == MemberState::fresh) continue;
+    out << "  [" << state_name(c.state) << "] " << survey.members[i].dir_name() << ": " << c.reason << "\n";
+  }
+  if (!survey.note.empty()) out << "  (" << survey.note << ")\n";
+  const bool exported = fs::exists(survey.layout.slurm_dir() / "export.json");
+  if (survey.count(MemberState::interrupted) + survey.count(MemberState::fresh) + survey.count(MemberState::failed) > 0) {
+    if (exported)
+      out << "  (exported for Slurm: `study export --slurm` again, then `sh " << (survey.layout.slurm_dir() / "submit.sh").string()
+          << "`, submits what is neither complete nor queued; `study run` runs it here instead)\n";
+    else
+      out << "  (`study run` again runs what is not complete; complete members are kept)\n";
+  }
+  if (survey.count(MemberState::unreadable) > 0)
+    out << "  (an unreadable member file is never deleted or run over: free it, or move it aside to run the member again)\n";
+  if (survey.count(MemberState::unstable) + survey.count(MemberState::stopped) > 0)
+    out << "  (unstable and stopped members are kept: `study run --rerun-unstable` / `--rerun-stopped` runs them again)\n";
+}
+
+RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
+  CampaignSurvey survey = survey_campaign(request.campaign_file, request.results_dir);
+  // --case: every name must be a case of the campaign (checked before anything is written).
+  for (const auto& name : request.cases) {
+    std::string known;
+    bool found = false;
+    for (const auto& c : survey.campaign.cases) {
+      known += (known.empty() ? "" : ", ") + c.name;
+      found = found || c.name == name;
+    }
+    if (!found)
+      throw campaign_error(request.campaign_file, "cases", "--case \"" + name + "\" names no case of this campaign",
+                           known.empty() ? "no --case: this campaign has no cases" : "one of: " + known);
+  }
+  // --where: every condition must parse and match at least one member of the campaign.
+  std::vector<SceneCondition> conditions;
+  for (const auto& text : request.where) {
+    try {
+      conditions.push_back(parse_scene_condition(text));
+    } catch (const std::invalid_argument& e) {
+      throw campaign_error(request.campaign_file, "--where", e.what(), "KEY=VALUE with a dotted scene key");
+    }
+    const bool any = std::any_of(survey.members.begin(), survey.members.end(),
+                                 [&](const Member& m) { return scene_matches(m.scene, {conditions.back()}); });
+    if (!any)
+      throw campaign_error(request.campaign_file, "--where", "\"" + text + "\" matches no member of this campaign",
+                           "a dotted key of the canonical scene (capsule check) and a value some member has");
+  }
+  // Refused before anything is written: a dirty build's members could not be reproduced.
+  if (std::any_of(survey.conditions.begin(), survey.conditions.end(), [&](const MemberCondition& c) {
+        return needs_run(c, request.rerun_unstable, request.rerun_stopped);
+      }))
+    require_committed_build(build::code_version, request.allow_dirty, "study run");
+  const fs::path capsule_binary = find_capsule_binary();
+  // The job list has one member directory per line; the wrapper names the capsule binary.
+  require_script_safe("the results folder", survey.layout.root);
+  require_script_safe("the capsule binary's path", capsule_binary);
+  fs::create_directories(survey.layout.root);
+  RunLock lock(survey.layout.lock_file(), survey.layout.running_info(), members_in_progress(survey));
+  prepare_member_directories(survey);
+
+  const auto selected = [&](const Member& m) {
+    if (!scene_matches(m.scene, conditions)) return false;
+    if (request.cases.empty()) return true;
+    for (const auto& name : request.cases)
+      if (m.case_name == name || std::find(m.other_cases.begin(), m.other_cases.end(), name) != m.other_cases.end())
+        return true;
+    return false;
+  };
+  std::vector<std::size_t> to_run;
+  bool any_3d = false;
+  for (std::size_t i = 0; i < survey.members.size(); ++i) {
+    if (!selected(survey.members[i])) continue;
+    if (!needs_run(survey.conditions[i], request.rerun_unstable, request.rerun_stopped)) continue;
+    to_run.push_back(i);
+  }
+  // A member another campaign under the same results folder finished is copied, not run again.
+  std::size_t copied_count = 0;
+  if (request.reuse_finished) {
+    std::vector<std::size_t> candidates;
+    for (std::size_t i : to_run)
+      if (const MemberState st = survey.conditions[i].state; st != MemberState::unstable && st != MemberState::stopped)
+        candidates.push_back(i);
+    const auto copied = copy_reusable_members(survey.members, candidates, survey.layout, out);
+    copied_count = copied.size();
+    to_run.erase(std::remove_if(to_run.begin(), to_run.end(),
+                                [&](std::size_t i) { return std::find(copied.begin(), copied.end(), i) != copied.end(); }),
+                 to_run.end());
+  }
+  for (std::size_t i : to_run) any_3d = any_3d || survey.members[i].scene.at("dim").get<int>() == 3;
+
+  // A run.json without "finished" is the record of a run that was killed: keep it.
+  if (fs::exists(survey.layout.run_json())) {
+    std::ifstream in(survey.layout.run_json());
+    const nlohmann::json last = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+    if (last.is_object() && !last.contains("finished")) {
+      nlohmann::json killed = last;
+      killed["ended"] = "killed: no summary was written";
+      append_run_history(survey.layout.run_history(), killed);
+    }
+  }
+  nlohmann::json record = run_record_start(survey.campaign.name, request.campaign_file);
+  record["capsule_binary"] = capsule_binary.string();
+  record["members"] = survey.members.size();
+  record["to_run"] = to_run.size();
+  record["copied_from_other_campaigns"] = copied_count;
+  if (request.allow_dirty && is_uncommitted_version(build::code_version)) record["allow_dirty"] = true;
+
+  RunOutcome outcome;
+  std::set<std::string> refused_members;  // members handed to a host that could not be reached
+  if (!to_run.empty()) {
+    const Concurrency conc =
+        choose_concurrency(usable_cores(), static_cast<int>(to_run.size()), any_3d, request.jobs, request.threads);
+    record["jobs"] = conc.jobs;
+    record["threads"] = conc.threads;
+    record["hosts_file"] = request.hosts_file;
+
+    std::string job_list;
+    for (std::size_t i : to_run) {
+      const MemberPaths p = survey.layout.member(survey.members[i]);
+      clear_for_rerun(p);  // a stale .partial or failed attempt is rerun from scratch
+      job_list += p.dir.string() + "\n";
+    }
+    write_file_atomically(survey.layout.jobs_file(), job_list);
+    write_member_wrapper(survey.layout.wrapper(),
+                         {survey.campaign.name, own_executable(), capsule_binary, request.checkpoint_seconds});
+    write_file_atomically(survey.layout.run_json(), record.dump(2) + "\n");
+
+    // No --halt: a failed member never stops the others. The command template holds no user
+    // string: GNU Parallel reads replacement strings ({}, {/}, {= perl =}) in the template, so
+    // the wrapper is named relative to the member folder that {} stands for
+    // (<root>/members/<member>/../../run_member.sh) and every path arrives only as data from
+    // the job list. -q quotes the words, so nothing reaches a shell unquoted either.
+    // "+joblog" appends: the joblog keeps every run's rows.
+    std::string joblog = "+";  // append(): GCC 12 -O3 reports a false -Wrestrict on "literal" + string
+    joblog.append(survey.layout.joblog().string());
+    std::vector<std::string> argv{"parallel", "--will-cite", "--joblog", joblog};
+    // With a hosts file, each line's "N/host" says how many members that host takes (GNU
+    // Parallel asks a host without N for its cores): no global --jobs unless the user gave -j.
+    if (request.hosts_file.empty() || request.jobs > 0) argv.insert(argv.end(), {"--jobs", std::to_string(conc.jobs)});
+    if (!request.hosts_file.empty()) {
+      argv.insert(argv.end(), {"--sshloginfile", fs::absolute(request.hosts_file).string()});
+      if (!request.ssh_command.empty()) argv.insert(argv.end(), {"--ssh", request.ssh_command});
+      // A member whose start failed (ssh's 255 from a host that cannot be reached; the wrapper
+      // itself returns 0 whatever the member's end) is tried again on another host.
+      argv.insert(argv.end(), {"--retries", std::to_string(request.retries)});
+    }
+    argv.insert(argv.end(), {"--arg-file", survey.layout.jobs_file().string(), "-q",
+                             "{}/../../" + survey.layout.wrapper().filename().string(), "{}",
+                             std::to_string(conc.threads)});
+
+    out << "running " << to_run.size() << " of " << survey.members.size() << " members (" << conc.jobs
+        << " at once" << (request.hosts_file.empty() ? "" : " per host") << " x " << conc.threads << " thread"
+        << (conc.threads > 1 ? "s" : "") << ")\n"
+        << std::flush;
+    const double start_epoch =
+        std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+    const auto start = std::chrono::steady_clock::now();
+    CampaignProgress progress(survey, to_run, conc.jobs, conc.threads, request.progress_bar, out);
+    const int parallel_status = run_and_wait(argv, [&lock](long pid) { lock.record(pid); }, [&] { progress.tick(); });
+    progress.finish();
+    outcome.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    outcome.ran = to_run.size();
+    // A row with exit value 255 is a member GNU Parallel could not hand to its host (ssh's
+    // own failure: the wrapper passes on the capsule's status, which is never 255).
+    std::map<std::string, std::vector<std::string>> refused;  // host -> members it was given
+    for (const auto& e : read_joblog(survey.layout.joblog())) {
+      if (e.start < start_epoch - 1.0) continue;  // this run's rows only
+      outcome.member_seconds += e.runtime;
+      if (e.exit_value == 255 && e.seq >= 1 && static_cast<std::size_t>(e.seq) <= to_run.size())
+        refused[e.host].push_back(survey.members[to_run[e.seq - 1]].dir_name());
+    }
+    record["parallel_exit_status"] = parallel_status;
+    // 1-100: that many jobs failed, 101: more; the members' own files tell which. 255 (or any
+    // other status) is GNU Parallel's own failure: a bad option or hosts file, no such program.
+    if (parallel_status > 101) {
+      out << "study: GNU Parallel itself failed (exit status " << parallel_status
+          << "; its message is above): members it did not start are still new\n";
+      outcome.tool_failed = true;
+      record["parallel_failed"] = true;
+    }
+    for (const auto& [host, members] : refused) {
+      out << "study: host " << host << " could not be reached (exit 255) for " << members.size() << " member"
+          << (members.size() == 1 ? "" : "s") << ":";
+      for (const auto& m : members) out << " " << m;
+      out << " (each tried again on another host, up to --retries " << request.retries << ")\n";
+      record["unreachable_hosts"][host] = members;
+    }
+    refused_members.clear();
+    for (const auto& [host, members] : refused) refused_members.insert(members.begin(), members.end());
+  } else {
+    // Finished, or kept as they are (running elsewhere, unreadable, unstable, stopped): the
+    // summary below says which.
+    out << "nothing to run"
+        << (request.cases.empty() && request.where.empty() ? "" : " among the members --case / --where select")
+        << ": no member needs running (the states are below)\n";
+  }
+
+  // The verdict comes from the members' own files.
+  for (std::size_t i = 0; i < survey.members.size(); ++i)
+    survey.conditions[i] = inspect_member(survey.layout.member(survey.members[i]), survey.members[i].id);
+  print_status(survey, out);
+  if (outcome.ran > 0)
+    out << "wall " << outcome.wall_seconds << " s for " << outcome.member_seconds
+        << " s of member run time (concurrency " << (outcome.wall_seconds > 0 ? outcome.member_seconds / outcome.wall_seconds : 0)
+        << ")\n";
+  // A member no host could be reached for is the tool's failure (exit 1), not the member's.
+  for (std::size_t i = 0; i < survey.members.size(); ++i)
+    if (refused_members.count(survey.members[i].dir_name()) && survey.conditions[i].state != MemberState::complete) {
+      out << "study: " << survey.members[i].dir_name() << " did not run: no host it was given could be reached\n";
+      outcome.tool_failed = true;
+    }
+  outcome.exit_code = outcome.tool_failed ? exit_failure : members_exit_code(survey);
+
+  record["finished"] = utc_now_iso8601();
+  record["wall_seconds"] = outcome.wall_seconds;
+  record["member_seconds"] = outcome.member_seconds;
+  nlohmann::json counts;
+  for (auto state : kAllMemberStates)
+    counts[state_name(state)] = survey.count(state);
+  record["counts"] = counts;
+  record["exit_status"] = outcome.exit_code;
+  write_file_atomically(survey.layout.run_json(), record.dump(2) + "\n");
+  append_run_history(survey.layout.run_history(), record);
+  return outcome;
+}
+
+}  // namespace capsule::study

@@ -1,0 +1,136 @@
+#include "study/run/member_run.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "build_info.hpp"
+#include "study/run/member_lock.hpp"
+#include "study/state/member_state.hpp"
+#include "study/state/results_layout.hpp"
+#include "study/state/run_record.hpp"
+
+namespace capsule::study {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kCapsuleStoppedBySignal = 4;  // solver/run/run_member.hpp kExitStoppedBySignal
+
+double now_seconds() {
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
+// A Slurm task's record in the campaign's runs.jsonl (<campaign>/members/<member>/../../).
+void record_slurm_task(const fs::path& member_dir, const std::string& started, double wall, int status) {
+  const char* job = std::getenv("SLURM_JOB_ID");
+  if (job == nullptr || *job == '\0') return;
+  const auto env = [](const char* name) {
+    const char* v = std::getenv(name);
+    return std::string(v ? v : "");
+  };
+  nlohmann::json r = {{"engine", "slurm"},
+                      {"slurm_job_id", env("SLURM_JOB_ID")},
+                      {"slurm_array_job_id", env("SLURM_ARRAY_JOB_ID")},
+                      {"slurm_array_task_id", env("SLURM_ARRAY_TASK_ID")},
+                      {"member", member_dir.filename().string()},
+                      {"host", host_name()},
+                      {"code_version", build::code_version},
+                      {"started", started},
+                      {"finished", utc_now_iso8601()},
+                      {"wall_seconds", wall},
+                      {"capsule_exit_status", status}};
+  if (status == kCapsuleStoppedBySignal) r["ended"] = "stopped by a signal after a restart point (resumable)";
+  append_run_history(member_dir.parent_path().parent_path() / "runs.jsonl", r);
+}
+
+}  // namespace
+
+int run_one_member(const MemberRunRequest& request, std::ostream& log) {
+  const MemberPaths paths = member_paths_in(request.member_dir);
+  const std::string name = request.member_dir.filename().string();
+  const std::string id = name.substr(name.rfind('-') + 1);
+  const MemberLock lock(request.member_dir);
+  if (!lock.held()) {
+    log << "study run-member: " << name << " is running on " << lock.owner().host << " (pid " << lock.owner().pid
+        << ", since " << lock.owner().started << "): left alone\n";
+    return 0;
+  }
+  const MemberCondition before = inspect_member(paths, id);
+  if (before.state == MemberState::complete || before.state == MemberState::unreadable) {
+    log << "study run-member: " << name << " is " << state_name(before.state) << ": nothing run"
+        << (before.reason.empty() ? "" : " (" + before.reason + ")") << "\n";
+    return 0;
+  }
+  std::error_code ec;
+  fs::remove(paths.exit_status, ec);
+  fs::remove(paths.partial, ec);
+
+  const std::string started = utc_now_iso8601();
+  const double t0 = now_seconds();
+  const int log_fd = ::open(paths.log.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  if (log_fd < 0) throw std::runtime_error("cannot open " + paths.log.string() + ": " + std::strerror(errno));
+  std::vector<std::string> words{request.capsule_binary.string(), paths.scene.string(), "-o", paths.h5.string(),
+                                 "--id", id, "--threads", std::to_string(request.threads), "--progress-seconds", "10",
+                                 "--checkpoint-seconds", std::to_string(request.checkpoint_seconds)};
+  std::vector<char*> argv;
+  for (auto& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+
+  // The signals to pass on wait, blocked, in sigtimedwait below (with SIGCHLD), so none is lost
+  // between the fork and the wait.
+  sigset_t wanted, old_mask;
+  sigemptyset(&wanted);
+  for (int s : {SIGCHLD, SIGTERM, SIGINT, SIGUSR1, SIGHUP}) sigaddset(&wanted, s);
+  sigprocmask(SIG_BLOCK, &wanted, &old_mask);
+  const pid_t child = ::fork();
+  if (child < 0) {
+    const int err = errno;
+    sigprocmask(SIG_SETMASK, &old_mask, nullptr);
+    ::close(log_fd);
+    throw std::runtime_error(std::string("cannot start capsule: ") + std::strerror(err));
+  }
+  if (child == 0) {
+    sigprocmask(SIG_SETMASK, &old_mask, nullptr);
+    ::dup2(log_fd, STDOUT_FILENO);
+    ::dup2(log_fd, STDERR_FILENO);
+    ::execv(argv[0], argv.data());
+    std::fprintf(stderr, "study run-member: cannot run %s: %s\n", argv[0], std::strerror(errno));
+    ::_exit(errno == ENOENT ? 127 : 126);
+  }
+  ::close(log_fd);
+  int status = 0;
+  for (;;) {
+    const timespec heartbeat{static_cast<time_t>(kLockHeartbeatSeconds), 0};
+    siginfo_t info{};
+    const int s = sigtimedwait(&wanted, &info, &heartbeat);
+    if (s == SIGCHLD || s < 0) {
+      if (s < 0 && errno != EAGAIN && errno != EINTR) {
+        ::waitpid(child, &status, 0);
+        break;
+      }
+      if (s < 0) lock.refresh();
+      const pid_t r = ::waitpid(child, &status, WNOHANG);
+      if (r == child) break;
+      continue;
+    }
+    ::kill(child, s);  // capsule writes a restart point at its next step and stops
+  }
+  sigprocmask(SIG_SETMASK, &old_mask, nullptr);
+  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : WIFSIGNALED(status) ? 128 + WTERMSIG(status) : 1;
+  if (code != kCapsuleStoppedBySignal) write_file_atomically(paths.exit_status, std::to_string(code) + "\n");
+  record_slurm_task(request.member_dir, started, now_seconds() - t0, code);
+  return code == 126 || code == 127 ? code : 0;
+}
+
+}  // namespace capsule::study

@@ -1,0 +1,68 @@
+#include "study/state/campaign_survey.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "study/state/campaign_owner.hpp"
+#include "study/slurm/slurm_queue.hpp"
+
+namespace capsule::study {
+
+namespace fs = std::filesystem;
+
+std::size_t CampaignSurvey::count(MemberState state) const {
+  std::size_t n = 0;
+  for (const auto& c : conditions) n += c.state == state;
+  return n;
+}
+
+CampaignSurvey survey_campaign(const std::string& campaign_file, const fs::path& results_dir, SurveyDetail detail) {
+  Campaign campaign = load_campaign(campaign_file);
+  ResultsLayout layout(results_dir, campaign.name);
+  require_same_campaign(campaign, layout);
+  std::vector<Member> members;
+  std::vector<MemberCondition> conditions;
+  for_each_member(
+      campaign,
+      [&](Member&& m) {
+        conditions.push_back(inspect_member(layout.member(m), m.id));
+        if (detail == SurveyDetail::states_only) m.scene = nlohmann::json();  // the bulk of a member
+        members.push_back(std::move(m));
+      },
+      [&](std::size_t index, const std::string& case_name) { members[index].other_cases.push_back(case_name); });
+  // Members whose Slurm task waits in the queue (after an export): not new, so neither a
+  // re-export nor `study run` starts them a second time.
+  const SlurmQueue queue = slurm_queue(layout);
+  for (std::size_t i = 0; i < members.size(); ++i)
+    if (const auto it = queue.queued.find(members[i].dir_name()); it != queue.queued.end())
+      if (const MemberState st = conditions[i].state;
+          st == MemberState::fresh || st == MemberState::interrupted || st == MemberState::failed)
+        conditions[i] = MemberCondition(MemberState::queued, "waiting in Slurm's queue: " + it->second);
+  CampaignSurvey survey{std::move(campaign), std::move(members), std::move(layout), std::move(conditions), queue.note};
+  return survey;
+}
+
+std::vector<std::string> members_in_progress(const CampaignSurvey& survey) {
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < survey.members.size(); ++i)
+    if (const MemberState st = survey.conditions[i].state; st == MemberState::running || st == MemberState::interrupted)
+      names.push_back(survey.members[i].dir_name());
+  return names;
+}
+
+void prepare_member_directories(const CampaignSurvey& survey) {
+  fs::create_directories(survey.layout.members_dir());
+  record_campaign(survey.campaign, survey.layout);
+  for (const auto& m : survey.members) {
+    const MemberPaths p = survey.layout.member(m);
+    fs::create_directories(p.dir);
+    const std::string text = m.scene.dump(2) + "\n";
+    if (!fs::exists(p.scene) || read_file_text(p.scene) != text) write_file_atomically(p.scene, text);
+  }
+}
+
+void clear_for_rerun(const MemberPaths& paths) {
+  for (const auto& p : {paths.h5, paths.partial, paths.exit_status}) fs::remove(p);
+}
+
+}  // namespace capsule::study

@@ -1,0 +1,44 @@
+#pragma once
+// A campaign file read, expanded, and matched against what its results folder holds:
+// the common first step of plan, run, status, export and report. Read-only.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "study/campaign/campaign.hpp"
+#include "study/campaign/expansion.hpp"
+#include "study/state/member_state.hpp"
+#include "study/state/results_layout.hpp"
+
+namespace capsule::study {
+
+struct CampaignSurvey {
+  Campaign campaign;
+  std::vector<Member> members;
+  ResultsLayout layout;
+  std::vector<MemberCondition> conditions;  // one per member
+  std::string note;                         // what could not be known (squeue failed), "" when all was
+
+  std::size_t count(MemberState state) const;
+};
+
+// What a survey keeps of each member: everything, or (for `study status`, which reads only
+// states) the member without its scene, so a 10^5-member campaign's status fits in little memory.
+enum class SurveyDetail { full, states_only };
+
+CampaignSurvey survey_campaign(const std::string& campaign_file, const std::filesystem::path& results_dir,
+                               SurveyDetail detail = SurveyDetail::full);
+
+// The folder names of the members that have a run in progress or an interrupted one (a
+// .partial or restart point and no member file): under a held run lock, the running ones.
+std::vector<std::string> members_in_progress(const CampaignSurvey& survey);
+
+// Creates every member directory and writes its scene.json (when missing or different),
+// and records the campaign file as run (campaign.json).
+void prepare_member_directories(const CampaignSurvey& survey);
+
+// Clears what a rerun replaces: member.h5 (if not complete), .partial, exit_status. The log is
+// kept (the rerun appends to it) and so is member.h5.restart, from which the rerun continues.
+void clear_for_rerun(const MemberPaths& paths);
+
+}  // namespace capsule::study

@@ -1,0 +1,196 @@
+#include "study/state/member_state.hpp"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <vector>
+
+#include "solver/io/member_file.hpp"
+#include "study/plan/duration_text.hpp"
+#include "study/run/member_lock.hpp"
+#include "study/state/process_alive.hpp"
+#include "study/state/run_record.hpp"
+
+namespace capsule::study {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The last non-empty line of a text file ("" when there is none).
+std::string last_line(const fs::path& path) {
+  std::ifstream in(path);
+  std::string line, last;
+  while (std::getline(in, line))
+    if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
+  return last;
+}
+
+std::string exit_meaning(int code) {
+  switch (code) {
+    case 1: return "solver failure";
+    case 2: return "bad scene or usage";
+    case 3: return "unstable";
+    case 4: return "stopped by a signal after its restart point";
+    case 126: return "capsule binary not executable";
+    case 127: return "capsule binary not found";
+    default: return code > 128 ? "killed by signal " + std::to_string(code - 128) : "exit status " + std::to_string(code);
+  }
+}
+
+double age_seconds(const fs::path& file) {
+  std::error_code ec;
+  const auto t = fs::last_write_time(file, ec);
+  if (ec) return 1e300;
+  return std::chrono::duration<double>(fs::file_time_type::clock::now() - t).count();
+}
+
+}  // namespace
+
+const char* state_name(MemberState state) {
+  switch (state) {
+    case MemberState::fresh: return "new";
+    case MemberState::interrupted: return "interrupted";
+    case MemberState::running: return "running";
+    case MemberState::complete: return "complete";
+    case MemberState::unstable: return "unstable";
+    case MemberState::stopped: return "stopped";
+    case MemberState::failed: return "failed";
+    case MemberState::unreadable: return "unreadable";
+    case MemberState::queued: return "queued";
+  }
+  return "?";
+}
+
+MemberCondition inspect_member(const MemberPaths& paths, const std::string& expected_id) {
+  std::error_code ec;
+  // A folder that cannot be looked into (no permission, a file where a folder should be) is not
+  // a member that never ran: say so, and never run over it.
+  const fs::file_status dir = fs::status(paths.dir, ec);
+  if (ec && ec != std::errc::no_such_file_or_directory)
+    return {MemberState::unreadable, "cannot look into the member folder " + paths.dir.string() + ": " + ec.message()};
+  if (!ec && dir.type() != fs::file_type::directory)
+    return {MemberState::unreadable, paths.dir.string() + " is not a folder"};
+  if (fs::symlink_status(paths.h5, ec).type() == fs::file_type::none || (ec && ec != std::errc::no_such_file_or_directory))
+    return {MemberState::unreadable, "cannot look at " + paths.h5.string() + ": " + ec.message()};
+  if (fs::exists(paths.h5, ec)) {
+    io::MemberStatus s;
+    try {
+      s = io::read_member_status(paths.h5.string());
+    } catch (const std::exception& e) {
+      return {MemberState::unreadable, std::string("member file cannot be read, left as it is (move it aside to "
+                                                   "run the member again): ") + e.what()};
+    }
+    if (s.member_id != expected_id)
+      return {MemberState::failed, "member file belongs to member \"" + s.member_id + "\", not " + expected_id};
+    if (s.status == "complete") return {MemberState::complete, ""};
+    if (s.status.rfind("unstable", 0) == 0) return {MemberState::unstable, s.status};
+    if (s.status.rfind("stopped", 0) == 0) return {MemberState::stopped, s.status};
+    return {MemberState::failed, "member file has status \"" + s.status + "\""};
+  }
+  // A live owner of the member's lock (study run-member: a local run, an SSH host, a Slurm task)
+  // runs it now, whatever an earlier attempt left.
+  const auto owner = live_lock_owner(paths.dir);
+  if (owner && !fs::exists(paths.partial, ec) && !fs::exists(paths.restart, ec))
+    return {MemberState::running, "starting on " + owner->host + " (pid " + std::to_string(owner->pid) + ")"};
+  if (!owner && fs::exists(paths.exit_status, ec)) {
+    std::ifstream in(paths.exit_status);
+    int code = -1;
+    if (!(in >> code))  // the wrapper could not write it whole: a full or read-only disk, most likely
+      return {MemberState::failed, "its exit_status file is empty or damaged (a full or read-only disk?); " +
+                                       (last_line(paths.log).empty() ? std::string("capsule.log is empty")
+                                                                     : "capsule.log ends: " + last_line(paths.log))};
+    if (code != 0) {
+      std::string reason = exit_meaning(code);
+      const std::string tail = last_line(paths.log);
+      if (!tail.empty()) reason += ": " + tail;
+      return {MemberState::failed, reason};
+    }
+    return {MemberState::failed, "capsule exited 0 but wrote no member file"};
+  }
+  if (fs::exists(paths.partial, ec) || fs::exists(paths.restart, ec)) {
+    MemberCondition c;
+    c.progress = read_progress(paths.progress);
+    // Live: the member's lock has a live owner; else (a capsule run by hand, or by an older
+    // study) a progress file naming a live process on this host; on another host (or before the
+    // first progress line) files written within kStaleSeconds.
+    bool live = owner.has_value();
+    if (!live && c.progress.present && c.progress.host == host_name()) {
+      live = process_alive(c.progress.pid);
+    } else if (!live) {
+      double age = c.progress.present ? c.progress.age_seconds : 1e300;
+      if (fs::exists(paths.partial, ec)) age = std::min(age, age_seconds(paths.partial));
+      live = age < kStaleSeconds;
+    }
+    if (live) {
+      c.state = MemberState::running;
+      std::ostringstream s;
+      if (c.progress.present && c.progress.phase != "starting") {
+        s << c.progress.phase << ", kt " << c.progress.kt << " of " << (c.progress.member_end_is_cap ? "<= " : "")
+          << c.progress.member_end_kt;
+        if (c.progress.eta_member_seconds >= 0)
+          s << ", ETA " << (c.progress.member_end_is_cap ? "<= " : "") << format_duration(c.progress.eta_member_seconds);
+      } else {
+        s << "starting";
+      }
+      c.reason = s.str();
+    } else {
+      c.state = MemberState::interrupted;
+      c.reason = fs::exists(paths.restart, ec)
+                     ? "killed while running; `study run` continues it from its restart point"
+                     : "killed while running (only member.h5.partial)";
+      if (c.progress.present) {
+        std::ostringstream s;
+        s << " at kt " << c.progress.kt;
+        c.reason += s.str();
+      }
+    }
+    return c;
+  }
+  return {MemberState::fresh, ""};
+}
+
+MemberProgress read_progress(const fs::path& file) {
+  MemberProgress p;
+  std::error_code ec;
+  if (!fs::exists(file, ec)) return p;
+  try {
+    std::ifstream in(file);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    p.pid = j.at("pid").get<long>();
+    p.host = j.at("host").get<std::string>();
+    p.phase = j.at("phase").get<std::string>();
+    p.kt = j.at("kt").get<double>();
+    p.member_end_kt = j.at("member_end_kt").get<double>();
+    p.member_end_is_cap = j.at("member_end_is_cap").get<bool>();
+    p.steps_per_second = j.at("steps_per_second").get<double>();
+    if (j.at("eta_member_seconds").is_number()) p.eta_member_seconds = j.at("eta_member_seconds").get<double>();
+    p.age_seconds = age_seconds(file);
+    p.present = true;
+  } catch (const std::exception&) {
+    p = {};  // a file being replaced or damaged: as if absent
+  }
+  return p;
+}
+
+bool needs_run(const MemberCondition& condition, bool rerun_unstable, bool rerun_stopped) {
+  switch (condition.state) {
+    case MemberState::complete: return false;
+    case MemberState::running: return false;  // a live capsule (another run, a Slurm task) owns it
+    case MemberState::unreadable: return false;  // never run over a file that may be complete
+    case MemberState::queued: return false;      // a Slurm task will run it
+    case MemberState::unstable: return rerun_unstable;
+    case MemberState::stopped: return rerun_stopped;
+    default: return true;
+  }
+}
+
+}  // namespace capsule::study
