@@ -1,6 +1,7 @@
 #pragma once
-// The matplotlib script that draws the report's figures, embedded so that the report
-// does not depend on where the source tree is. It reads figures/figure_data.json.
+// The matplotlib script that draws the report's figures (analysis/report/plot_report.py),
+// embedded at build time so that the report does not depend on where the source tree is. It
+// reads figures/figure_data.json.
 #include <string>
 
 namespace capsule::analysis {

@@ -145,3 +145,23 @@ for s in data.get("stability", []):
     fig.tight_layout()
     fig.savefig(os.path.join(out, s["name"] + ".png"), dpi=120)
     plt.close(fig)
+
+# Figs. 7 and 9 (block "published"): members' D_xy (solid) and D_extent (dotted) during the
+# shear against the published curves (markers), one colour per curve.
+if data.get("published"):
+    fig, ax = plt.subplots(figsize=(5.5, 3.8))
+    for k, p in enumerate(data["published"]):
+        color = "C%d" % (k % 10)
+        ax.plot(p["ref_kt"], p["ref_D"], "o", ms=3, mfc="none", color=color, label=p["curve"])
+        for m in p["members"]:
+            kt = [t for t in m["kt"] if t <= m["end"]]
+            ax.plot(kt, m["D_xy"][:len(kt)], "-", lw=1.0, color=color)
+            if "D_extent" in m:
+                ax.plot(kt, m["D_extent"][:len(kt)], ":", lw=1.0, color=color)
+    ax.set_xlabel("kt")
+    ax.set_ylabel("D")
+    ax.set_title("members (D_xy solid, D_extent dotted) against published curves (markers)", fontsize=8)
+    ax.legend(fontsize=6)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "published.png"), dpi=120)
+    plt.close(fig)
