@@ -10,14 +10,14 @@ namespace capsule::analysis {
 
 namespace {
 
-// What tests/data/reference/README.md says of each family of curves.
+// What analysis/reference/README.md says of each family of curves.
 void describe(PublishedCurve& c) {
   if (c.name.find("rp1998") != std::string::npos) {
     c.source = "Ramanujan and Pozrikidis, J. Fluid Mech. 361 (1998) 117-143";
     c.measure = "capsule extent in the shear plane (boundary integral)";
     c.digitising_error = 0.005;
   } else {
-    c.source = "tests/data/reference/README.md";
+    c.source = "analysis/reference/README.md";
     c.measure = "as the source";
     c.digitising_error = 0.005;
   }

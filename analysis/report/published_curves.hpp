@@ -1,7 +1,7 @@
 #pragma once
 // Published curves D(kt) that a campaign's members are compared with (the report's
 // "published" section): digitised from the figures of the papers the dissertation validates
-// against, shipped in tests/data/reference/ (sources in its README) and embedded at build time.
+// against, shipped in analysis/reference/ (sources in its README) and embedded at build time.
 #include <string>
 #include <vector>
 

@@ -3,19 +3,12 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "table2_csv.hpp"
+
 namespace capsule::analysis {
 
 const std::string& table2_csv_text() {
-  // Copied from analysis/reference/table2_dissertation.csv (the test
-  // "Table 2 reference: embedded copy equals the shipped CSV" keeps them equal).
-  static const std::string text = R"csv(target,Ca,E_b,a,a_half_width,b,b_half_width,c,c_half_width
-k_tau_s,0.05,0,0.0208,0.0039,0.0590,0.0149,0.4158,0.0638
-k_tau_r,0.05,0,0.0534,0.0028,0.2711,0.0109,0.3986,0.0466
-k_tau_s,0.05,0.025,0.0157,0.0039,0.0550,0.0158,0.2567,0.0638
-k_tau_r,0.05,0.025,0.0299,0.0018,0.1380,0.0075,0.2209,0.0303
-k_tau_s,0.2,0,0.0417,0.0110,0.1464,0.0410,0.685,0.1402
-k_tau_r,0.2,0,0.2438,0.0128,1.0120,0.0477,1.614,0.162
-)csv";
+  static const std::string text = k_table2_csv;  // analysis/reference/table2_dissertation.csv, embedded at build time
   return text;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // The dissertation's Table 2 (Sec. 5.1.1): bilinear coefficients (95)-(96) of spherical
-// capsules with 95 % half-widths. The text is embedded (a copy of
-// analysis/reference/table2_dissertation.csv), so nothing depends on the source tree.
+// capsules with 95 % half-widths, from analysis/reference/table2_dissertation.csv, embedded at
+// build time so that nothing depends on the source tree.
 #include <string>
 #include <vector>
 

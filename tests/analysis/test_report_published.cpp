@@ -61,11 +61,11 @@ void add_curve_member(ReportRequest& req, const fs::path& root, const std::strin
 
 }  // namespace
 
-TEST_CASE("Published curves: the embedded copies are the files in tests/data/reference", "[analysis][published]") {
+TEST_CASE("Published curves: the embedded copies are the files in analysis/reference", "[analysis][published]") {
   const auto names = published_curve_names();
   REQUIRE(names.size() >= 4);
   for (const auto& name : names) {
-    std::ifstream f(std::string(CAPSULE_SOURCE_DIR) + "/tests/data/reference/" + name + ".csv");
+    std::ifstream f(std::string(CAPSULE_SOURCE_DIR) + "/analysis/reference/" + name + ".csv");
     REQUIRE(f.good());
     std::stringstream text;
     text << f.rdbuf();

@@ -8,7 +8,7 @@
 
 using namespace capsule::analysis;
 
-TEST_CASE("Table 2 reference: embedded copy equals the shipped CSV", "[analysis]") {
+TEST_CASE("Table 2 reference: the build embeds analysis/reference/table2_dissertation.csv as it is", "[analysis]") {
   std::ifstream f(std::string(CAPSULE_SOURCE_DIR) + "/analysis/reference/table2_dissertation.csv");
   REQUIRE(f);
   std::stringstream s;

@@ -36,9 +36,9 @@ struct Curve {
   }
 };
 
-// Digitised curve, sorted by time (README of tests/data/reference).
+// Digitised curve, sorted by time (README of analysis/reference).
 Curve reference_curve(const std::string& ca) {
-  std::ifstream f(std::string(CAPSULE_SOURCE_DIR) + "/tests/data/reference/sphere_neohookean_V1_rp1998_ca" + ca + ".csv");
+  std::ifstream f(std::string(CAPSULE_SOURCE_DIR) + "/analysis/reference/sphere_neohookean_V1_rp1998_ca" + ca + ".csv");
   REQUIRE(f);
   std::string line;
   std::getline(f, line);
@@ -108,7 +108,7 @@ TEST_CASE("neo-Hookean sphere in shear: short coarse run follows Ramanujan-Pozri
   // (+-0.005, 2.5 %) plus the coarse IB's overshoot; reading (56) with G_s = E_s instead of
   // E_s/3 gives 0.150 (-24 %) and fails.
   CHECK(std::abs(D_end - D_ref) < 0.08 * D_ref);
-  // The two measures agree for a nearly ellipsoidal shape (tests/data/reference/README.md): within 10 % here.
+  // The two measures agree for a nearly ellipsoidal shape (analysis/reference/README.md): within 10 % here.
   CHECK(De.back() == Approx(D_end).epsilon(0.1));
   // Tank-treading capsule inclined between 0 and 45 degrees to the flow.
   CHECK(d.series.at("theta").back() > 0.3);
@@ -286,7 +286,7 @@ TEST_CASE("the automatic tau runs the default member through steady shear and re
 
 TEST_CASE("validation: neo-Hookean sphere steady D_xy against Ramanujan-Pozrikidis at a = 10 and level 4", "[.validation][capsule3d]") {
   // Hidden (CTest does not run it): ~40 min per capillary number (one thread, a = 10).
-  // Steady plateaus read from the reference curves (tests/data/reference/README.md).
+  // Steady plateaus read from the reference curves (analysis/reference/README.md).
   // Issue 11 item 7: no fixed acceptance bound (the old 5 % at Ca 0.05 is not met at a = 10).
   // The check is the toolkit's measured error at this resolution, so a change that moves it
   // is noticed: D_xy lies above the reference by 7.1 % (Ca 0.05) and 4.9 % (Ca 0.1), measured

@@ -220,6 +220,4 @@ ClaimResult claim_3_5_3d(const ThesisResults& res) {
   return r;
 }
 
-// ---------------------------------------------------------------- Chapter 4 (biconcave)
-
 }  // namespace capsule::analysis::claims

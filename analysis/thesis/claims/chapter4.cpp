@@ -413,6 +413,4 @@ ClaimResult claim_4_2_C(const ThesisResults& res) {
   return r;
 }
 
-// ---------------------------------------------------------------- Chapter 5
-
 }  // namespace capsule::analysis::claims
