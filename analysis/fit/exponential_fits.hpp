@@ -49,7 +49,7 @@ FitResult fit_double_exponential(const std::vector<double>& kt, const std::vecto
 // (90) with free amplitudes: D = D_inf + (D_stop - D_inf)(w exp(-t / k tau_R1) +
 // (1 - w) exp(-t / k tau_R2)) on [t_stop, t_end], w in (0, 1) fitted (parameter "w_R1"),
 // k tau_R1 <= k tau_R2. (90) fixes w = 1/2; a recovery whose fast phase carries a quarter
-// of the change (Fig. 38's capsule, issue 12) needs w free.
+// of the change (Fig. 38's capsule) needs w free.
 FitResult fit_double_exponential_free(const std::vector<double>& kt, const std::vector<double>& D, double D_stop,
                                       double D_inf, double t_stop, double t_end);
 

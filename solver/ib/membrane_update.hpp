@@ -1,6 +1,6 @@
 #pragma once
 // How the membrane nodes move with the fluid (20): the time level of the interpolated velocity
-// and the order of the position update (issue 11 item 4; scene key resolution.membrane_update,
+// and the order of the position update (scene key resolution.membrane_update,
 // 3D only). Per lattice step the fluid is driven by the force F(X^n) spread at X^n (21), then
 //
 //   euler              X^{n+1} = X^n + U^{n+1}(X^n)                       (the default, (20))

@@ -1,7 +1,7 @@
 // `capsule bench lbm`: speed of the fused stream-collide step against the memory roofline.
 //
 // Kernels (same process, same machine, same threads, so the ratio survives a busy machine):
-//   baseline  the kernel before issue 10 (baseline_stream_collide.hpp: full moment transform,
+//   baseline  the kernel before the rewrite (baseline_stream_collide.hpp: full moment transform,
 //             double populations, rho/u written and F read at every node);
 //   double    Fluid's kernel (split collision, in-place AA streaming) in double precision;
 //   double-2lat the same collision streamed between two lattices (shifted_stream_collide.hpp):
@@ -198,7 +198,7 @@ int bench_lbm(bool quick, int max_threads) {
   std::printf("bytes/update: populations read+write, force read, rho+u write (double: D2Q9 184, D3Q19 360;\n"
               " single: 112, 208; rows0 = no macroscopic rows: populations only)\n");
   std::printf("bandwidth: STREAM-like copy (16 B/element, no write-allocate counted), same threads\n");
-  std::printf("x base: MLUPS over the baseline kernel's (the kernel before issue 10) in this run\n");
+  std::printf("x base: MLUPS over the baseline kernel's (the kernel before the rewrite) in this run\n");
   double load[3] = {0.0, 0.0, 0.0};
   if (getloadavg(load, 3) == 3)
     std::printf("machine load average at start: %.2f (1 min), %d hardware threads used at most\n", load[0], all);

@@ -1,4 +1,4 @@
-// `capsule bench member3d`: where a step of a full 3D member goes (issue 10's step benchmark).
+// `capsule bench member3d`: where a step of a full 3D member goes (the step benchmark).
 //
 // The member is the default 3D scene of the reference member (sphere, neo-Hookean, Ca = 0.05,
 // E_b = 0.025, V = 1, eta = 0, a = 10, level 4 = 2562 vertices, 100 x 100 x 80 nodes, the
@@ -9,7 +9,7 @@
 //   viscosity  the viscosity field (V != 1 or a power-law membrane)
 //   elastic    the membrane's elastic (and SLS) forces
 //   curvature  the curvature fit of the bending force; bending: the bending force itself
-// "membrane %" is (coupling + elastic + curvature + bending) / step: issue 10 asks for <= 15 %.
+// "membrane %" is (coupling + elastic + curvature + bending) / step: the goal is <= 15 %.
 // The same process runs every row, so their ratios survive a busy machine; the figures in
 // docs/findings/performance.md "The reference 3D member" were taken on an idle one.
 #include "solver/run/bench_member3d.hpp"

@@ -271,11 +271,11 @@ Scene Scene::from_json(const json& j, const std::string& source) {
     if (s.dim == 2 && s.kernel != "peskin4")
       q.fail("kernel", "kernel \"" + s.kernel + "\" is 3D only", "\"peskin4\" in 2D");
     // Precision of the fluid's populations (solver/lbm/precision.hpp). 3D: single by default,
-    // after the comparison of issue 10 (campaigns/precision_*.json and the reference member at
+    // after the precision comparison (campaigns/precision_*.json and the reference member at
     // a = 10: steady D_xy and fitted times within 1e-4 relative of double, the fluid about 2x
     // faster). 2D: double (a 2D member is cheap and its campaigns ran in double).
     s.precision = q.choice("precision", default_precision(s.dim), {"double", "single"});
-    // Time level and order of the membrane position update (20), issue 11 item 4.
+    // Time level and order of the membrane position update (20).
     s.membrane_update =
         q.choice("membrane_update", std::string("euler"), {"euler", "previous_velocity", "adams_bashforth2"});
     if (s.dim == 2 && s.membrane_update != "euler")

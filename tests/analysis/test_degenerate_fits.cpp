@@ -70,7 +70,7 @@ TEST_CASE("Degenerate series give a reason, not a number", "[analysis]") {
   }
   SECTION("a model that does not describe its data is refused with its R^2") {
     // A biconcave capsule starts at D = 0.812, dips and comes back: (85), which starts at
-    // D = 0, cannot describe it (issue 12 saw R^2 = -80 printed as a number).
+    // D = 0, cannot describe it (R^2 = -80 was once printed as a number).
     std::vector<double> D;
     for (double t : kt) D.push_back(0.812 - 0.3 * std::sin(3.14159265358979 * t / 10.0) + 0.001 * t);
     const FitResult f = fit_response(kt, D, D.back(), 10.0);

@@ -116,10 +116,10 @@ std::vector<Case> cases() {
                  return fit_double_exponential(s.kt, s.D, D_stop, D_inf, t_stop, t_end);
                },
                {0.2, 2.0}});
-  // Fig. 38's shape of recovery (issue 12): a fast phase carrying a quarter of the change,
+  // Fig. 38's shape of recovery : a fast phase carrying a quarter of the change,
   // then a slow one; (90)'s equal halves cannot describe it, free amplitudes can.
   c.push_back(free_amplitude_case("double exponential, free amplitudes", 0.443, 0.795, 0.3, 6.0, 0.25, 20.0, 50.0));
-  // The toolkit's own Fig. 38 capsule at a = 10 (issue 12 probe, E_b = 0.05): a fast phase of
+  // The toolkit's own Fig. 38 capsule at a = 10 (a probe, E_b = 0.05): a fast phase of
   // 0.18 kt carrying 18 % of the change. From the single-exponential guess alone the fast time
   // ran onto its floor on that member; the multi-start finds it.
   c.push_back(free_amplitude_case("double exponential, free amplitudes, small fast phase", 0.443, 0.800, 0.18, 6.2,

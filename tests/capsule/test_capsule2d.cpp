@@ -313,7 +313,7 @@ TEST_CASE("IB self-mobility of a node force, used by the implicit membrane visco
 }
 
 // resolution.precision = "single" runs the fluid in float (solver/lbm/precision.hpp) end to
-// end. Not a physics comparison (issue 10 leaves that to a campaign): it shows the choice
+// end. Not a physics comparison (that is a campaign's): it shows the choice
 // reaches the fluid and a short member agrees with double to well below the discretisation
 // error. Measured |D_single / D_double - 1| ~ 1e-5 at kt = 1 (a = 5).
 TEST_CASE("single precision is selectable in a 2D scene and agrees with double", "[capsule2d]") {

@@ -231,7 +231,7 @@ TEST_CASE("membrane viscosity (standard linear solid) slows the response of a sp
 TEST_CASE("the dissertation's SLS reading has a third of the membrane viscosity", "[capsule3d]") {
   // (63) read literally: Maxwell modulus g_1(0)/2 = E_m/3, tau_m = mu_s/E_m, so its Kelvin-Voigt
   // limit is mu_s/3. Its eta = 6 must therefore be the physical eta = 2, to round-off, and
-  // deform more than the physical eta = 6 (issue 12: Table 2's eta coefficients 2.2-2.7 x).
+  // deform more than the physical eta = 6 (Table 2's eta coefficients 2.2-2.7 x).
   std::string text = sphere_scene(0.1, 4.0, 2, 0.3, 6.0);
   text.insert(text.rfind('}'), R"(, "conventions": {"sls_viscosity": "dissertation"})");
   const io::MemberData d_text = run(text, "sls_text");
@@ -287,7 +287,7 @@ TEST_CASE("the automatic tau runs the default member through steady shear and re
 TEST_CASE("validation: neo-Hookean sphere steady D_xy against Ramanujan-Pozrikidis at a = 10 and level 4", "[.validation][capsule3d]") {
   // Hidden (CTest does not run it): ~40 min per capillary number (one thread, a = 10).
   // Steady plateaus read from the reference curves (analysis/reference/README.md).
-  // Issue 11 item 7: no fixed acceptance bound (the old 5 % at Ca 0.05 is not met at a = 10).
+  // No fixed acceptance bound (the old 5 % at Ca 0.05 is not met at a = 10).
   // The check is the toolkit's measured error at this resolution, so a change that moves it
   // is noticed: D_xy lies above the reference by 7.1 % (Ca 0.05) and 4.9 % (Ca 0.1), measured
   // with this test, and 3.3 % (Ca 0.2: mean over kt 5-6 of bench_accuracy_3d's member a = 10,
@@ -392,7 +392,7 @@ TEST_CASE("power-law membrane viscosity (99)-(104) slows the response like a vis
 }
 
 // resolution.precision = "single" end to end in 3D (float fluid, the macroscopic rows around
-// the membrane as in double). Not the physics comparison of issue 10: it shows the choice
+// the membrane as in double). Not the precision campaigns' comparison: it shows the choice
 // reaches the fluid and a short coarse member agrees with double far below the
 // discretisation error (measured relative difference of D_xy ~ 1e-5 at kt = 0.5).
 TEST_CASE("single precision (the 3D default) agrees with double in a 3D scene", "[capsule3d]") {

@@ -41,7 +41,7 @@ TEST_CASE("a minimal scene gets the documented defaults", "[scene]") {
   json j3 = j;
   j3["conventions"] = {{"E_b_2d", "dissertation"}};
   CHECK_THROWS_WITH(Scene::from_json(j3, "t.json"), Catch::Contains("conventions.E_b_2d: the 2D bending convention"));
-  CHECK(t.precision == "single");  // 3D default (issue 10's comparison)
+  CHECK(t.precision == "single");  // 3D default (the precision comparison)
   // biconcave_2d: not in the canonical text at its default (member ids made before it stay),
   // written when set, refused where it means nothing.
   CHECK(s.biconcave_2d == "equivalent");

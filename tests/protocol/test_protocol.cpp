@@ -67,7 +67,7 @@ TEST_CASE("steady and settled detection use the stated window and tolerance", "[
 
 TEST_CASE("settled is not fooled by the turning point of a slow, non-monotone recovery", "[protocol]") {
   // A tank-treading biconcave capsule's D_xy falls for ~15 kt after the stop and then rises
-  // slowly back toward its undeformed 0.812 (Fig. 30; issue 12 measured 0.639 at the stop,
+  // slowly back toward its undeformed 0.812 (Fig. 30; 0.639 was measured at the stop,
   // 0.5445 at the minimum). Here D = 0.5445 + c (s - 15)^2, s = kt - t_stop, with c such that
   // D(0) = 0.639: over any 2 kt window around s = 15 its range is below 1e-3.
   const double c = (0.639 - 0.5445) / 225.0;

@@ -1,4 +1,4 @@
-// The bad-input table (issue 13, item 5): every refusal of a scene, a campaign or a command
+// The bad-input table: every refusal of a scene, a campaign or a command
 // line, run through the real binaries (`capsule check`, `capsule`, `study plan` / `run` /
 // `export`), checking the exit status and that the message names the file, the key and
 // what is allowed. One row per refusal; a new refusal gets a new row.

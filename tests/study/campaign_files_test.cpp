@@ -13,7 +13,7 @@ TEST_CASE("every campaign file plans without error", "[study]") {
   const fs::path campaigns = fs::path(CAPSULE_SOURCE_DIR) / "campaigns";
   const fs::path results = testing::scratch_dir("plan_all");
   std::size_t files = 0;
-  for (const auto& entry : fs::directory_iterator(campaigns)) {
+  for (const auto& entry : fs::recursive_directory_iterator(campaigns)) {
     if (entry.path().extension() != ".json") continue;
     ++files;
     INFO(entry.path().string());
@@ -27,7 +27,7 @@ TEST_CASE("every campaign file plans without error", "[study]") {
     CHECK(s.campaign.name == entry.path().stem().string());  // results/<name> matches the file name
     for (const auto& m : s.members) CHECK(estimate_cost(m.scene).nodes > 0);
   }
-  CHECK(files >= 25);  // demo, the 18 dissertation campaigns (docs/guide/campaigns.md "The shipped campaigns"), precision_double/single (issue 10), 4 accuracy/stability benches (issue 11)
+  CHECK(files >= 25);  // demo, the 18 dissertation campaigns (docs/guide/campaigns.md "The shipped campaigns"), precision_double/single, 4 accuracy/stability benches, the probes
   CHECK_FALSE(fs::exists(results / "demo"));  // planning wrote nothing
   fs::remove_all(results);
 }

@@ -27,7 +27,7 @@ TEST_CASE("shipped results match their campaigns: no orphaned member or stale fo
   const fs::path source(CAPSULE_SOURCE_DIR);
   const fs::path results = source / "results";
   std::size_t shipped = 0;
-  for (const auto& entry : fs::directory_iterator(source / "campaigns")) {
+  for (const auto& entry : fs::recursive_directory_iterator(source / "campaigns")) {
     if (entry.path().extension() != ".json") continue;
     const fs::path root = results / entry.path().stem();
     if (!fs::exists(root / "members")) continue;
