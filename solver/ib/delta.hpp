@@ -7,7 +7,7 @@
 //       (5 - 2|r| - sqrt(-7 + 12|r| - 4 r^2)) / 8      for 1 <= |r| <= 2.
 // Both have the same support and cost.
 //
-// Properties (tested in tests/membrane2d/test_ib.cpp):
+// Properties (tested in tests/solver/ib/ib_test.cpp):
 //  - partition of unity: sum_j delta(x - x_j) = 1 exactly for every offset;
 //  - the first moment sum_j (x - x_j) delta(x - x_j) is NOT zero for the cosine kernel
 //    (unlike Peskin's 4-point kernel): it equals first_moment_error(r) below, zero when

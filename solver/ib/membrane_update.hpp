@@ -11,7 +11,7 @@
 //                      second order in time (the first step is euler).
 //
 // dt = 1 lattice step, k dt = Re nu / a^2 (about 2e-4 at a = 10, tau = 1.5), so these differ by
-// O(k dt) per unit kt; tests/membrane2d/test_ib.cpp checks their order on an exact rotation.
+// O(k dt) per unit kt; tests/solver/ib/ib_test.cpp checks their order on an exact rotation.
 #include <cstddef>
 #include <stdexcept>
 #include <string>

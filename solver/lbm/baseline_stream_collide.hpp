@@ -4,7 +4,7 @@
 // Fluid no longer runs it; `capsule bench lbm` times it beside the new kernel (the
 // `baseline` rows, same process, same machine); no test runs it (the kernels Fluid runs are
 // tested against each other and against the reference MRT collision:
-// tests/lbm/in_place_test.cpp, tests/lbm/split_collision_test.cpp). Namespace lbm::baseline.
+// tests/solver/lbm/in_place_test.cpp, tests/solver/lbm/split_collision_test.cpp). Namespace lbm::baseline.
 //
 // One fused pass: collide every node (collision.hpp) and push the post-collision
 // populations to their neighbours in the second lattice (periodic in x and z,

@@ -235,7 +235,7 @@ void Fluid<L>::import_state(State&& in) {
       !(in.viscosity.empty() || in.viscosity.size() == n_))
     throw std::invalid_argument("Fluid::import_state: the saved fields do not fit this lattice");
   // Back into the natural (unswapped) layout: the in-place and two-lattice schemes give the
-  // same numbers from the same populations (tests/lbm), so the next step continues bitwise.
+  // same numbers from the same populations (tests/solver/lbm), so the next step continues bitwise.
   swapped_ = false;
   for (int i = 0; i < Q; ++i)
     for (std::size_t node = 0; node < n_; ++node) {

@@ -38,7 +38,7 @@
 // force everywhere. set_macroscopic_region(boxes) restricts both, from the next step on, to
 // the x-rows (fixed y, z) that meet the boxes: elsewhere density()/velocity() keep stale
 // values and the force is IGNORED (taken as zero). Inside, the values are bitwise those of
-// the full fields (tests/lbm/macroscopic_region_test.cpp). The 3D driver sets the rows
+// the full fields (tests/solver/lbm/macroscopic_region_test.cpp). The 3D driver sets the rows
 // around the membrane each step (IB support, gradient stencil, motion margin) and asks for
 // the full fields on the step before an output row. set_macroscopic_everywhere() undoes it.
 //

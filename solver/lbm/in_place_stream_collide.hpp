@@ -3,7 +3,7 @@
 // of two, so a step moves each population once in and once out and no write-allocate
 // traffic for a second lattice. Same collision (SplitCollision), same walls, same
 // precision choices and macroscopic rows as the two-lattice kernel
-// (shifted_stream_collide.hpp), which it equals bitwise (tests/lbm/in_place_test.cpp).
+// (shifted_stream_collide.hpp), which it equals bitwise (tests/solver/lbm/in_place_test.cpp).
 //
 // Two alternating steps on the array A[i][x] (SoA, padded rows, shifted populations):
 //  - natural state (after initialisation and after every odd step): f_i(x) sits in A[i][x].

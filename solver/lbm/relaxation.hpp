@@ -21,7 +21,7 @@
 //    both lattices. Keeping the text's s_eps and fixing s_e too (e.g. 1.64) is stable
 //    for tau >= 0.6 as well, but gives up the exact Couette flow. eps enters no hydrodynamic
 //    term at Navier-Stokes order (Sec. 2.1 says as much), so nu is unchanged;
-//    tests/lbm/viscosity_contrast_stability_test.cpp and two_layer_couette_test.cpp
+//    tests/solver/lbm/viscosity_contrast_stability_test.cpp and two_layer_couette_test.cpp
 //    check ratios 5 and 10;
 //  - the remaining higher-order moments: L::fixed_rate (none in D2Q9; pi and m at 1.8
 //    in D3Q19).

@@ -18,7 +18,7 @@
 // x86-64-v3 (AVX2, FMA), baseline x86-64. The FMA clones contract multiply-adds, so results
 // depend on the clone: the same binary on the same CPU with the same thread count gives
 // bitwise the same numbers (the kernel has no reductions and a static schedule, so even
-// the thread count does not matter: tests/lbm/determinism_test.cpp), but an AVX2-only and
+// the thread count does not matter: tests/solver/lbm/determinism_test.cpp), but an AVX2-only and
 // an AVX-512 machine differ at round-off. CAPSULE_LBM_FAST_CLONES overrides the list.
 #include <cstddef>
 

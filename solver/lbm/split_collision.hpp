@@ -12,7 +12,7 @@
 //            + (1 - s_nu/2) sum_a F_a c_a / |M_ja|^2               (momentum: BGK took s_nu F/2 of it)
 // because M is orthogonal, the BGK part relaxes every moment at s_nu, and d_rho = 0,
 // d_ja = -F_a/2. Same equilibrium (5), same rates: equal to Collision<L> up to round-off
-// (tests/lbm/split_collision_test.cpp). It costs ~1/3 of the full moment transform: the
+// (tests/solver/lbm/split_collision_test.cpp). It costs ~1/3 of the full moment transform: the
 // equilibrium is per pair of opposite populations, and only the extra moments are
 // transformed (D3Q19 ~ 230 flops a node instead of ~800).
 //

@@ -29,7 +29,7 @@ using Clock = std::chrono::steady_clock;
 // Mobility of the implicit Kelvin-Voigt prediction (Membrane::set_node_velocity). A node force F
 // reaches its own interpolated velocity over two steps: (3/8)^2 F / 2 = 0.0703 F in its own step
 // (the F/2 of u (22); Peskin self weight sum phi^2 = (3/8)^2 in 2D) and 0.0797 F in the next
-// (tests/capsule: "IB self-mobility"). The prediction uses 2 (3/8)^2: measured at a = 10 it keeps
+// (tests/solver/run: "IB self-mobility"). The prediction uses 2 (3/8)^2: measured at a = 10 it keeps
 // eta up to 20 stable (0.1406: 12 runs, 16 does not; 24 blows up with either); D_xy(kt) at eta = 12 is the
 // same to 6 digits with 0.1406 and 0.2812, and steady states do not depend on it at all.
 constexpr double kKVMobility = 2.0 * (3.0 / 8.0) * (3.0 / 8.0);

@@ -2,7 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include "solver/scene/memory_estimate.hpp"
-#include "tests/capsule/member_compare.hpp"
+#include "tests/solver/run/member_compare.hpp"
 
 using namespace capsule;
 using namespace capsule::testing;

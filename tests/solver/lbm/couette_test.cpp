@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "solver/lbm/fluid.hpp"
-#include "tests/lbm/flow_helpers.hpp"
+#include "tests/solver/lbm/flow_helpers.hpp"
 
 using namespace capsule::lbm;
 

@@ -3,7 +3,7 @@
 // kill, and the resumed member is bitwise the uninterrupted one.
 #include <catch2/catch.hpp>
 
-#include "tests/capsule/member_compare.hpp"
+#include "tests/solver/run/member_compare.hpp"
 
 using namespace capsule;
 using namespace capsule::testing;

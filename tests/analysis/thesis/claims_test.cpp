@@ -9,8 +9,8 @@
 #include "analysis/thesis/claims.hpp"
 #include "analysis/thesis/report.hpp"
 #include "solver/io/member_file.hpp"
-#include "synthetic_campaign.hpp"
-#include "thesis_fixtures.hpp"
+#include "tests/analysis/synthetic_campaign.hpp"
+#include "tests/analysis/thesis_fixtures.hpp"
 
 using namespace capsule::analysis;
 using namespace capsule::analysis::testing;

@@ -5,8 +5,8 @@
 #include "analysis/fit/fit_statistics.hpp"
 #include "analysis/thesis/report.hpp"
 #include "analysis/thesis/table2.hpp"
-#include "synthetic_campaign.hpp"
-#include "thesis_fixtures.hpp"
+#include "tests/analysis/synthetic_campaign.hpp"
+#include "tests/analysis/thesis_fixtures.hpp"
 
 using namespace capsule::analysis;
 using namespace capsule::analysis::testing;

@@ -16,7 +16,7 @@
 #include "solver/lbm/collision.hpp"
 #include "solver/lbm/fluid.hpp"
 #include "solver/lbm/relaxation.hpp"
-#include "tests/lbm/flow_helpers.hpp"
+#include "tests/solver/lbm/flow_helpers.hpp"
 
 using namespace capsule::lbm;
 

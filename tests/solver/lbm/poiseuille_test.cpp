@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "solver/lbm/fluid.hpp"
-#include "tests/lbm/flow_helpers.hpp"
+#include "tests/solver/lbm/flow_helpers.hpp"
 
 using namespace capsule::lbm;
 

@@ -6,7 +6,7 @@
 #include "tests/support/hdf5_damage.hpp"
 
 #include "solver/io/state_archive.hpp"
-#include "tests/capsule/member_compare.hpp"
+#include "tests/solver/run/member_compare.hpp"
 
 using namespace capsule;
 using namespace capsule::testing;

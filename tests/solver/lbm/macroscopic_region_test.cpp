@@ -10,7 +10,7 @@
 #include "solver/ib/interpolation.hpp"
 #include "solver/ib/support_rows.hpp"
 #include "solver/lbm/fluid.hpp"
-#include "tests/lbm/flow_helpers.hpp"
+#include "tests/solver/lbm/flow_helpers.hpp"
 
 using namespace capsule;
 using namespace capsule::lbm;
