@@ -24,6 +24,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 #include <memory>
@@ -38,6 +39,9 @@
 #include "solver/ib/support_rows.hpp"
 #include "solver/ib/viscosity_contrast.hpp"
 #include "solver/lbm/fluid.hpp"
+#include <Eigen/Eigenvalues>
+
+#include "solver/membrane3d/curvature.hpp"
 #include "solver/membrane3d/membrane_forces.hpp"
 #include "solver/membrane3d/phase_angles.hpp"
 #include "solver/membrane3d/shape_measures.hpp"
@@ -99,6 +103,9 @@ class Simulation3D {
     const auto d0 = m3::inertia_deformation(mesh_);
     phase_ = m3::PhaseTracker(mesh_, d0.centroid, d0.theta);
     area0_ = m3::surface_area(mesh_);
+    start_angle_.resize(mesh_.vertex_count());
+    for (int i = 0; i < mesh_.vertex_count(); ++i)
+      start_angle_[i] = std::atan2(mesh_.x[i].y() - d0.centroid.y(), mesh_.x[i].x() - d0.centroid.x());
   }
 
   const Units& units() const { return units_; }
@@ -112,6 +119,39 @@ class Simulation3D {
   const Timings& timings() const { return timings_; }
   const m3::MembraneTimings& membrane_timings() const { return forces_.timings(); }
   const std::vector<int>& tracked() const { return phase_.vertices(); }
+
+  // What a snapshot shows on the membrane (output.snapshots, docs/guide/member-files.md
+  // "Snapshots"): per vertex the membrane velocity (in units of k a), the mean curvature
+  // (79) times a, and the angle it has turned about the centroid in the shear plane since the
+  // start (the tank-treading phase of (91)-(92) at every vertex, in (-pi, pi]); per triangle the
+  // principal stretches lambda_1 >= lambda_2 and the area dilation lambda_1 lambda_2 (the
+  // invariants of C against the reference shape).
+  std::vector<m3::VtkField> snapshot_point_fields() const {
+    const std::size_t n = mesh_.vertex_count();
+    const double velocity_unit = units_.shear_rate * scene_.a;
+    m3::VtkField velocity{"membrane_velocity", 3, std::vector<double>(3 * n)};
+    for (std::size_t i = 0; i < 3 * n; ++i) velocity.values[i] = U_[i] / velocity_unit;
+    m3::VtkField curvature{"mean_curvature", 1, m3::fit_curvatures(mesh_).mean};
+    for (double& k : curvature.values) k *= scene_.a;
+    const m3::Vec3 c = m3::inertia_deformation(mesh_).centroid;
+    m3::VtkField turn{"turned_angle", 1, std::vector<double>(n)};
+    for (std::size_t i = 0; i < n; ++i) {
+      const double now = std::atan2(mesh_.x[i].y() - c.y(), mesh_.x[i].x() - c.x());
+      turn.values[i] = std::remainder(now - start_angle_[i], 2 * M_PI);
+    }
+    return {velocity, curvature, turn};
+  }
+  std::vector<m3::VtkField> snapshot_cell_fields() const {
+    const int t_count = mesh_.triangle_count();
+    m3::VtkField l1{"stretch_1", 1, std::vector<double>(t_count)}, l2{"stretch_2", 1, std::vector<double>(t_count)},
+        J{"area_dilation", 1, std::vector<double>(t_count)};
+    for (int t = 0; t < t_count; ++t) {
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(forces_.elastic().cauchy_green(mesh_, t));
+      const double s1 = std::sqrt(std::max(0.0, eig.eigenvalues()(1))), s2 = std::sqrt(std::max(0.0, eig.eigenvalues()(0)));
+      l1.values[t] = s1, l2.values[t] = s2, J.values[t] = s1 * s2;
+    }
+    return {l1, l2, J};
+  }
 
   void step(double shear_factor) {
     const std::size_t n = mesh_.vertex_count();
@@ -405,6 +445,7 @@ class Simulation3D {
   std::unique_ptr<ib::PowerLawViscosity<3>> power_law_;
   std::vector<double> base_nu_;  // the contrast viscosity (16) per node, kept when both act
   std::vector<double> U_;
+  std::vector<double> start_angle_;  // each vertex's angle about the start centroid in the shear plane
   std::vector<double> spread_from_;  // node positions of the last spreading
   m3::PhaseTracker phase_;
   double E_B_ = 0, K_v_ = 0, area0_ = 0, shear_modulus_ = 0, tau_m_ = 0;
@@ -424,12 +465,16 @@ class Simulation3D {
 // Seconds of one part of a step: the difference of an accumulated timer over the measurement.
 double per_step(double after, double before, long steps) { return steps > 0 ? (after - before) / double(steps) : 0.0; }
 
-std::string snapshot_path(const std::string& member_path, double kt) {
+// <member>_kt0001.000.vtp beside the member file; <member>.pvd collects them.
+std::string snapshot_base(const std::string& member_path) {
   std::string base = member_path;
   if (base.size() > 3 && base.substr(base.size() - 3) == ".h5") base.resize(base.size() - 3);
+  return base;
+}
+std::string snapshot_path(const std::string& member_path, double kt) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "_kt%08.3f.vtk", kt);
-  return base + buf;
+  std::snprintf(buf, sizeof buf, "_kt%08.3f.vtp", kt);
+  return snapshot_base(member_path) + buf;
 }
 
 }  // namespace
@@ -492,14 +537,19 @@ std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, const Ru
 
   std::vector<int> triangles;
   for (const auto& t : mesh.triangles) triangles.insert(triangles.end(), t.begin(), t.end());
+  std::vector<std::pair<double, std::string>> snapshots;  // (kt, .vtp file) written so far
   const std::string status = run_output_loop(
       sim, scene, protocol, out, control, u.shear_rate,
       static_cast<double>(scene.grid()[0]) * scene.grid()[1] * scene.grid()[2],
       [&](std::vector<double>& beta) { return sim.row(beta); },
       [&](double kt) {
         out.add_shape(kt, sim.shape(), 3, triangles);
-        if (scene.snapshots == "vtk")
-          m3::write_vtk_polydata(snapshot_path(out.final_path(), kt), sim.mesh(), "capsule kt = " + std::to_string(kt));
+        if (scene.snapshots == "vtk") {
+          const std::string file = snapshot_path(out.final_path(), kt);
+          m3::write_vtp(file, sim.mesh(), sim.snapshot_point_fields(), sim.snapshot_cell_fields());
+          snapshots.emplace_back(kt, std::filesystem::path(file).filename().string());
+          m3::write_pvd(snapshot_base(out.final_path()) + ".pvd", snapshots);  // a time series for ParaView
+        }
       });
   out.set_markers(protocol.markers());
   out.set_attribute("protocol", protocol.phase_note());

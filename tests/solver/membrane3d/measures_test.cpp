@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <numbers>
 #include <string>
 
@@ -89,17 +90,24 @@ TEST_CASE("phase angles are zero for a rigid rotation and follow tank-treading",
   }
 }
 
-TEST_CASE("VTK polydata snapshot holds the mesh", "[membrane3d]") {
+TEST_CASE("VTK XML snapshot holds the mesh and its fields; a field of the wrong size is refused", "[membrane3d]") {
   const Mesh m = sphere_mesh(unit_icosphere(1), 2.0);
-  const std::string path = "membrane3d_test_snapshot.vtk";
-  write_vtk_polydata(path, m, "test", {{"kappa", std::vector<double>(m.vertex_count(), 0.5)}});
+  const std::string path = "membrane3d_test_snapshot.vtp";
+  write_vtp(path, m, {{"kappa", 1, std::vector<double>(m.vertex_count(), 0.5)}},
+            {{"stretch_1", 1, std::vector<double>(m.triangle_count(), 1.0)}});
   std::ifstream f(path);
   std::string line, all;
   while (std::getline(f, line)) all += line + "\n";
-  CHECK(all.find("POINTS 42 double") != std::string::npos);
-  CHECK(all.find("POLYGONS 80 320") != std::string::npos);
-  CHECK(all.find("SCALARS kappa double 1") != std::string::npos);
+  CHECK(all.find("NumberOfPoints=\"42\" NumberOfPolys=\"80\"") != std::string::npos);
+  CHECK(all.find("Name=\"kappa\" NumberOfComponents=\"1\"") != std::string::npos);
+  CHECK(all.find("<CellData>") != std::string::npos);
   std::remove(path.c_str());
-  CHECK_THROWS(write_vtk_polydata(path, m, "bad", {{"k", {1.0}}}));
-  std::remove(path.c_str());
+  CHECK_THROWS(write_vtp(path, m, {{"k", 1, {1.0}}}, {}));
+  CHECK_FALSE(std::ifstream(path).good());
+  CHECK_FALSE(std::ifstream(path + ".tmp").good());  // nothing left behind
+  write_pvd("membrane3d_test.pvd", {{0.0, "a&b.vtp"}});
+  std::ifstream pvd("membrane3d_test.pvd");
+  std::string text((std::istreambuf_iterator<char>(pvd)), std::istreambuf_iterator<char>());
+  CHECK(text.find("file=\"a&amp;b.vtp\"") != std::string::npos);
+  std::remove("membrane3d_test.pvd");
 }

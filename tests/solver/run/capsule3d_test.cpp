@@ -192,7 +192,7 @@ TEST_CASE("biconcave starts of Table 1: D_xy = 0.51 and case C pre-stressed and 
   }
 }
 
-TEST_CASE("shape snapshots: member-file shapes with triangles and VTK files beside it", "[capsule3d]") {
+TEST_CASE("shape snapshots: member-file shapes with triangles and a VTK time series beside it", "[capsule3d]") {
   omp_set_num_threads(1);  // as in run()
   const Scene scene = Scene::from_json(nlohmann::json::parse(biconcave_scene(
       "A", -2.09, 0.1, R"(, "shapes_at_kt": [0, 0.1], "snapshots": "vtk")")), "snapshots");
@@ -209,9 +209,10 @@ TEST_CASE("shape snapshots: member-file shapes with triangles and VTK files besi
   CHECK(d.shapes[0].dim == 3);
   CHECK(d.shapes[0].xyz.size() == 3 * 162);
   CHECK(d.triangles.size() == 3 * 320);
-  int vtk_files = 0;
-  for (const auto& e : std::filesystem::directory_iterator(dir)) vtk_files += e.path().extension() == ".vtk";
-  CHECK(vtk_files == 2);
+  int vtp_files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) vtp_files += e.path().extension() == ".vtp";
+  CHECK(vtp_files == 2);
+  CHECK(std::filesystem::exists(dir / "member.pvd"));  // the time series (read by VTK: vtk_snapshots_test.py)
   std::filesystem::remove_all(dir);
 }
 
