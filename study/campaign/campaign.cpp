@@ -1,5 +1,6 @@
 #include "study/campaign/campaign.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -188,9 +189,31 @@ Campaign parse_campaign(const std::string& text, const std::string& source) {
   return c;
 }
 
+namespace {
+
+// Campaign files of this name in the folder's subfolders (campaigns/ groups them:
+// dissertation/, accuracy/, probes/), for a path that names one at its old place.
+std::string same_name_below(const std::filesystem::path& path) {
+  std::error_code ec;
+  const std::filesystem::path folder = path.parent_path().empty() ? "." : path.parent_path();
+  std::string found;
+  for (std::filesystem::recursive_directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    if (it.depth() > 1) it.disable_recursion_pending();
+    if (it->path().filename() == path.filename() && it->path() != path)
+      found.append(found.empty() ? "" : " or ").append(it->path().string());
+  }
+  return found;
+}
+
+}  // namespace
+
 Campaign load_campaign(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw campaign_error(path, "", "cannot open the campaign file");
+  if (!in) {
+    const std::string moved = same_name_below(path);
+    throw campaign_error(path, "", "cannot open the campaign file",
+                         moved.empty() ? "" : "a campaign file; this name is at " + moved);
+  }
   std::ostringstream text;
   text << in.rdbuf();
   return parse_campaign(text.str(), path);

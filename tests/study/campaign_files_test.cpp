@@ -62,3 +62,11 @@ TEST_CASE("study plan prints every member and changes nothing", "[study]") {
   CHECK(bad.output.find("bad.json: extra: unknown key") != std::string::npos);
   fs::remove_all(dir);
 }
+
+TEST_CASE("a campaign named at its place before the campaigns were grouped is found for the user", "[study]") {
+  const auto r = testing::run_study({"plan", "campaigns/ch3_ca.json"}, CAPSULE_SOURCE_DIR);
+  INFO(r.output);
+  CHECK(r.exit_code == 2);
+  CHECK(r.output.find("cannot open the campaign file") != std::string::npos);
+  CHECK(r.output.find("this name is at campaigns/dissertation/ch3_ca.json") != std::string::npos);
+}
