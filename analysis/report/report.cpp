@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <set>
 #include <stdexcept>
 
@@ -20,10 +21,18 @@ void draw_figures(const fs::path& out, const nlohmann::json& figure_data, Report
   const fs::path fig_dir = out / "figures";
   fs::create_directories(fig_dir);
   const fs::path data_path = fig_dir / "figure_data.json";
-  const fs::path script_path = fig_dir / "plot_report.py";
+  // The script is the toolkit's (analysis/report/plot_report.py): run from a temporary copy and
+  // not kept, so the reports hold no copies of it; `python3 analysis/report/plot_report.py
+  // figures/figure_data.json figures` redraws a report's figures.
+  const fs::path script_path = fig_dir / ".plot_report.py.tmp";
   outputs.write_text(data_path, figure_data.dump() + "\n");
-  outputs.write_text(script_path, plot_script_text());
+  {
+    std::ofstream script(script_path, std::ios::binary | std::ios::trunc);
+    script << plot_script_text();
+  }
   const std::string note = run_plot_script(script_path.string(), data_path.string(), fig_dir.string());
+  std::error_code ec;
+  fs::remove(script_path, ec);
   if (!note.empty()) {
     summary.figures_skipped = true;
     summary.figures_note = note;

@@ -219,7 +219,8 @@ TEST_CASE("write_report draws figures or says why it skipped them", "[analysis]"
   req.analysis.erase("bilinear");
   const ReportSummary summary = write_report(req);
   const fs::path fig = fs::path(req.out_dir) / "figures";
-  CHECK(fs::exists(fig / "plot_report.py"));
+  CHECK_FALSE(fs::exists(fig / "plot_report.py"));  // the toolkit's script draws; no copy is kept
+  CHECK_FALSE(fs::exists(fig / ".plot_report.py.tmp"));
   CHECK(fs::exists(fig / "figure_data.json"));
   if (summary.figures_skipped) {
     WARN("figures skipped: " << summary.figures_note);
