@@ -12,6 +12,7 @@
 #include "study/run/campaign_runner.hpp"
 #include "study/state/campaign_survey.hpp"
 #include "study/state/exit_status.hpp"
+#include "study/campaign/campaign_files.hpp"
 #include "study/run/member_run.hpp"
 #include "study/run/provenance.hpp"
 #include "study/plan/plan_table.hpp"
@@ -39,15 +40,22 @@ int main_body(int argc, char** argv) {
   std::string results_dir = "results";
   const auto count = capsule::cli::whole_number_at_least(1);
 
-  std::string plan_file;
+  std::vector<std::string> plan_files;
   auto* plan = app.add_subcommand("plan", "list the members, their state and cost; changes nothing");
-  plan->add_option("campaign", plan_file, "campaign JSON file")->required();
+  plan->add_option("campaign", plan_files,
+                   "campaign JSON files, or folders of them (campaigns/dissertation/: every campaign, shared members "
+                   "counted once in the total)")
+      ->required()->expected(1, -1);
   plan->add_option("--results", results_dir, "results folder")->capture_default_str();
 
   RunRequest run_request;
   auto* run = app.add_subcommand("run", "run every member that is not complete (GNU Parallel); resumable");
   run->footer(exit_status_help());
-  run->add_option("campaign", run_request.campaign_file, "campaign JSON file")->required();
+  std::vector<std::string> run_files;
+  run->add_option("campaign", run_files,
+                  "campaign JSON files, or folders of them: run one after another, in path order (a member shared "
+                  "with an earlier one is copied from it)")
+      ->required()->expected(1, -1);
   run->add_option("--jobs,-j", run_request.jobs, "members at once (default: 2D members one thread each, as many at once as cores; 3D: one member on every core)")
       ->check(count);
   run->add_option("--threads,-t", run_request.threads, "OpenMP threads per member (default: chosen)")->check(count);
@@ -121,11 +129,11 @@ int main_body(int argc, char** argv) {
       ->capture_default_str();
   thesis->add_option("-o,--output", thesis_out, "file to write (default: <results>/THESIS.md)");
 
-  std::string export_file;
+  std::vector<std::string> export_files;
   bool slurm = false;
   SlurmOptions slurm_options;
   auto* exporter = app.add_subcommand("export", "write a job list and a Slurm array script");
-  exporter->add_option("campaign", export_file, "campaign JSON file")->required();
+  exporter->add_option("campaign", export_files, "campaign JSON files, or folders of them")->required()->expected(1, -1);
   exporter->add_flag("--slurm", slurm, "write slurm/jobs and slurm/capsule.sbatch")->required();
   exporter->add_option("--threads,-t", slurm_options.threads,
                        "CPUs per task (default: 1 for 2D, " + std::to_string(default_3d_cpus) + " for 3D)")
@@ -163,7 +171,12 @@ int main_body(int argc, char** argv) {
   if (const int code = capsule::cli::parse_or_exit_code(app, argc, argv); code >= 0) return code;
 
   if (*plan) {
-    const Campaign campaign = load_campaign(plan_file);
+    const std::vector<std::string> files = campaign_files_of(plan_files);
+    if (files.size() > 1) {
+      print_plans(files, results_dir, std::cout);
+      return exit_ok;
+    }
+    const Campaign campaign = load_campaign(files.front());
     const ResultsLayout layout(results_dir, campaign.name);
     require_same_campaign(campaign, layout);
     print_plan(campaign, layout, std::cout);  // member by member: bounded memory
@@ -175,7 +188,14 @@ int main_body(int argc, char** argv) {
   if (*run) {
     run_request.results_dir = results_dir;
     run_request.progress_bar = ::isatty(STDOUT_FILENO) != 0;
-    return run_campaign(run_request, std::cout).exit_code;
+    const std::vector<std::string> files = campaign_files_of(run_files);
+    std::vector<int> codes;
+    for (const auto& file : files) {
+      if (files.size() > 1) std::cout << "\n== " << file << "\n" << std::flush;
+      run_request.campaign_file = file;
+      codes.push_back(run_campaign(run_request, std::cout).exit_code);
+    }
+    return worst_exit_code(codes);
   }
   if (*status) {
     const CampaignSurvey survey = survey_campaign(status_file, results_dir, SurveyDetail::states_only);
@@ -191,7 +211,8 @@ int main_body(int argc, char** argv) {
     return write_thesis_comparison(results_dir, out, std::cout);
   }
   if (*exporter) {
-    const CampaignSurvey survey = survey_campaign(export_file, results_dir);
+    for (const auto& file : campaign_files_of(export_files)) {
+      const CampaignSurvey survey = survey_campaign(file, results_dir);
     const SlurmExport e = export_slurm(survey, slurm_options);
     std::cout << e.copied << "job list: " << e.job_list.string() << "\n";
     for (const auto& sc : e.scripts)
@@ -202,6 +223,7 @@ int main_body(int argc, char** argv) {
     else
       std::cout << " (" << e.resources.cpus << " CPUs, --time " << e.resources.time << ", --mem " << e.resources.mem
                 << " per task); submit with: sh " << e.submit.string() << " (arguments go to sbatch)\n";
+    }
     return exit_ok;
   }
   return exit_usage;

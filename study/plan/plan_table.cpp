@@ -15,6 +15,7 @@
 #include "solver/scene/memory_estimate.hpp"
 #include "study/plan/concurrency.hpp"
 #include "study/plan/duration_text.hpp"
+#include "study/state/campaign_owner.hpp"
 #include "study/state/member_reuse.hpp"
 #include "study/state/stray_folders.hpp"
 
@@ -57,7 +58,8 @@ CampaignEstimate estimate_campaign(const CampaignSurvey& survey, const MeasuredS
   return e;
 }
 
-void print_plan(const Campaign& plan_campaign, const ResultsLayout& layout, std::ostream& out) {
+PlanSummary print_plan(const Campaign& plan_campaign, const ResultsLayout& layout, std::ostream& out) {
+  PlanSummary summary;
   // Pass 1, member by member: the measured speeds of members that ran, and what is pending.
   MeasuredSpeed speed;
   std::size_t pending_count = 0;
@@ -140,6 +142,7 @@ void print_plan(const Campaign& plan_campaign, const ResultsLayout& layout, std:
           const double estimate = estimated_member_seconds(c, dim, campaign.threads, speed);
           campaign.member_seconds += estimate;
           longest = std::max(longest, estimate);
+          summary.pending_seconds[m.id] = estimate;
         }
         if (copy_from) seconds = "copy";
         else if (!pending && std::isfinite(measured.wall_seconds)) seconds = format_number(measured.wall_seconds);
@@ -198,6 +201,42 @@ void print_plan(const Campaign& plan_campaign, const ResultsLayout& layout, std:
     out << "  (seconds: '~' estimated from the cost model, docs/guide/running.md \"Time and memory estimates\"; a phase that ends on a\n"
            "   condition counts at its expected end, a theta/beta stop at its cap)\n";
   }
+  summary.jobs = campaign.jobs;
+  summary.threads = campaign.threads;
+  summary.wall_seconds = campaign.wall_seconds;
+  summary.peak_memory = peak_memory;
+  return summary;
+}
+
+void print_plans(const std::vector<std::string>& campaign_files, const std::filesystem::path& results_dir,
+                 std::ostream& out) {
+  std::map<std::string, double> once;  // member id -> seconds, the first campaign that runs it
+  double wall = 0, peak = 0, core_seconds = 0;
+  std::size_t pending = 0;
+  for (const auto& file : campaign_files) {
+    const Campaign campaign = load_campaign(file);
+    const ResultsLayout layout(results_dir, campaign.name);
+    require_same_campaign(campaign, layout);
+    out << "\n== " << file << "\n";
+    const PlanSummary s = print_plan(campaign, layout, out);
+    double own = 0, fresh = 0;
+    for (const auto& [id, seconds] : s.pending_seconds) {
+      own += seconds;
+      ++pending;
+      if (once.emplace(id, seconds).second) {
+        fresh += seconds;
+        core_seconds += seconds * s.threads;
+      }
+    }
+    // Its wall time without the members an earlier campaign of the list runs (this one copies them).
+    if (own > 0) wall += s.wall_seconds * fresh / own;
+    if (!s.pending_seconds.empty()) peak = std::max(peak, s.peak_memory);
+  }
+  out << "\n== all " << campaign_files.size() << " campaigns: " << pending << " members to run, " << once.size()
+      << " of them different (" << pending - once.size()
+      << " shared between campaigns run once, then copied); about " << format_number(core_seconds / 3600.0)
+      << " core-hours, estimated wall time " << format_duration(wall) << " on this machine run one campaign after "
+      << "another in this order; the largest member needs " << format_bytes(peak) << " of memory\n";
 }
 
 }  // namespace capsule::study

@@ -5,7 +5,11 @@
 // Changes nothing. Members are expanded, inspected and printed one at a time
 // (for_each_member, in two passes: measured speeds first, then the rows), so a
 // 10^6-member grid plans in bounded memory.
+#include <filesystem>
+#include <map>
 #include <ostream>
+#include <string>
+#include <vector>
 
 #include "study/campaign/campaign.hpp"
 #include "study/state/campaign_survey.hpp"
@@ -15,7 +19,21 @@
 
 namespace capsule::study {
 
-void print_plan(const Campaign& campaign, const ResultsLayout& layout, std::ostream& out);
+// What a plan found to run: per pending member (by id) its estimated wall seconds on `threads`
+// threads, the concurrency `study run` would choose, and the largest member's memory.
+struct PlanSummary {
+  std::map<std::string, double> pending_seconds;  // member id -> estimated seconds
+  int jobs = 1, threads = 1;
+  double wall_seconds = 0, peak_memory = 0;
+};
+
+PlanSummary print_plan(const Campaign& campaign, const ResultsLayout& layout, std::ostream& out);
+
+// Several campaigns planned together (a folder of them, e.g. campaigns/dissertation/): each
+// one's plan, then the total with every member shared between campaigns counted once (the
+// first campaign to run it runs it; the others copy it, state/member_reuse.hpp).
+void print_plans(const std::vector<std::string>& campaign_files, const std::filesystem::path& results_dir,
+                 std::ostream& out);
 
 // Estimated wall seconds of one member with `threads` threads, corrected by measured speed.
 double estimated_member_seconds(const CostEstimate& cost, int dim, int threads, const MeasuredSpeed& speed);

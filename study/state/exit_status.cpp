@@ -11,6 +11,13 @@ int members_exit_code(const CampaignSurvey& survey) {
   return exit_ok;
 }
 
+int worst_exit_code(const std::vector<int>& codes) {
+  for (int code : {exit_failure, exit_usage, exit_run_still_going, exit_members_failed, exit_members_missing})
+    for (int c : codes)
+      if (c == code) return code;
+  return exit_ok;
+}
+
 const char* exit_status_help() {
   return "Exit status: 0 done (run/status/report: every member complete); 1 the tool failed; 2 bad campaign\n"
          "file or command line; 3 some member failed, ended unstable or stopped; 4 no member failed but some\n"
