@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "build_info.hpp"
+#include "solver/run/run_member.hpp"
 #include "study/run/member_lock.hpp"
 #include "study/state/member_state.hpp"
 #include "study/state/results_layout.hpp"
@@ -24,8 +25,6 @@ namespace capsule::study {
 namespace fs = std::filesystem;
 
 namespace {
-
-constexpr int kCapsuleStoppedBySignal = 4;  // solver/run/run_member.hpp kExitStoppedBySignal
 
 double now_seconds() {
   return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
@@ -50,7 +49,7 @@ void record_slurm_task(const fs::path& member_dir, const std::string& started, d
                       {"finished", utc_now_iso8601()},
                       {"wall_seconds", wall},
                       {"capsule_exit_status", status}};
-  if (status == kCapsuleStoppedBySignal) r["ended"] = "stopped by a signal after a restart point (resumable)";
+  if (status == kExitStoppedBySignal) r["ended"] = "stopped by a signal after a restart point (resumable)";
   append_run_history(member_dir.parent_path().parent_path() / "runs.jsonl", r);
 }
 
@@ -128,7 +127,7 @@ int run_one_member(const MemberRunRequest& request, std::ostream& log) {
   }
   sigprocmask(SIG_SETMASK, &old_mask, nullptr);
   const int code = WIFEXITED(status) ? WEXITSTATUS(status) : WIFSIGNALED(status) ? 128 + WTERMSIG(status) : 1;
-  if (code != kCapsuleStoppedBySignal) write_file_atomically(paths.exit_status, std::to_string(code) + "\n");
+  if (code != kExitStoppedBySignal) write_file_atomically(paths.exit_status, std::to_string(code) + "\n");
   record_slurm_task(request.member_dir, started, now_seconds() - t0, code);
   return code == 126 || code == 127 ? code : 0;
 }
