@@ -142,18 +142,11 @@ ClaimResult claim_3_4_linear(const ThesisResults& res, const std::string& case_n
                         "linear: R^2 of a straight-line fit >= 0.95 and slope > 0, for each time; >= 4 values of V");
   const ThesisCampaign& c = res.campaign("ch3_v");
   if (!have_campaign(r, c)) return r;
-  bool ok = true;
-  std::string text;
-  for (const char* col : {"response.k_tau_s", "recovery.k_tau_r"}) {
-    const Series s = series(c, case_name, "V", col);
-    if (!have_points(r, s, 4, std::string("values of V with ") + bare_time(col))) return r;
+  return judge_both_times(r, c, case_name, "V", 4, [](const Series& s, std::string& numbers) {
     const LineFit f = fit_line(s.xs(), s.ys());
-    ok = ok && f.ok && f.r_squared >= 0.95 && f.slope > 0;
-    text += (text.empty() ? "" : "; ") + bare_time(col) + ": slope " + num(f.slope) + ", R^2 " + num(f.r_squared) +
-            " (" + s.listing("V") + ")";
-  }
-  set(r, ok, text);
-  return r;
+    numbers = "slope " + num(f.slope) + ", R^2 " + num(f.r_squared);
+    return f.ok && f.r_squared >= 0.95 && f.slope > 0;
+  });
 }
 
 // Sec. 3.4: "As V -> 0 ... the characteristic times tend toward k tau_r ~ k tau_s".
@@ -185,17 +178,11 @@ ClaimResult claim_3_5_2d(const ThesisResults& res) {
                         "(max - min)/mean over the eta sweep at most 0.1, for each time; >= 3 values of eta");
   const ThesisCampaign& c = res.campaign("ch3_eta");
   if (!have_campaign(r, c)) return r;
-  bool ok = true;
-  std::string text;
-  for (const char* col : {"response.k_tau_s", "recovery.k_tau_r"}) {
-    const Series s = series(c, "2d", "eta", col);
-    if (!have_points(r, s, 3, std::string("values of eta with ") + bare_time(col))) return r;
+  return judge_both_times(r, c, "2d", "eta", 3, [](const Series& s, std::string& numbers) {
     const double spread = relative_spread(s.ys());
-    ok = ok && spread <= 0.1;
-    text += (text.empty() ? "" : "; ") + bare_time(col) + ": spread " + num(spread) + " (" + s.listing("eta") + ")";
-  }
-  set(r, ok, text);
-  return r;
+    numbers = "spread " + num(spread);
+    return spread <= 0.1;
+  });
 }
 
 // Sec. 3.5: "in three dimensions, the characteristic times displayed a clear linear dependence on eta".
@@ -205,19 +192,12 @@ ClaimResult claim_3_5_3d(const ThesisResults& res) {
                         "sweep, for each time; >= 4 values of eta");
   const ThesisCampaign& c = res.campaign("ch3_eta");
   if (!have_campaign(r, c)) return r;
-  bool ok = true;
-  std::string text;
-  for (const char* col : {"response.k_tau_s", "recovery.k_tau_r"}) {
-    const Series s = series(c, "3d", "eta", col);
-    if (!have_points(r, s, 4, std::string("values of eta with ") + bare_time(col))) return r;
+  return judge_both_times(r, c, "3d", "eta", 4, [](const Series& s, std::string& numbers) {
     const LineFit f = fit_line(s.xs(), s.ys());
     const double rise = s.points.back().y / s.points.front().y - 1.0;
-    ok = ok && f.ok && f.r_squared >= 0.95 && f.slope > 0 && rise >= 0.2;
-    text += (text.empty() ? "" : "; ") + bare_time(col) + ": slope " + num(f.slope) + ", R^2 " + num(f.r_squared) +
-            ", rise " + num(100 * rise) + " % (" + s.listing("eta") + ")";
-  }
-  set(r, ok, text);
-  return r;
+    numbers = "slope " + num(f.slope) + ", R^2 " + num(f.r_squared) + ", rise " + num(100 * rise) + " %";
+    return f.ok && f.r_squared >= 0.95 && f.slope > 0 && rise >= 0.2;
+  });
 }
 
 }  // namespace capsule::analysis::claims

@@ -40,19 +40,12 @@ ClaimResult claim_orders(const ThesisResults& res, const std::string& section, c
 }
 
 // Exponent of a fitted time against one parameter of a case, judged against [lo, hi].
-bool exponent_part(const ThesisCampaign& c, const std::string& case_name, const std::string& x, const std::string& column,
-                   double lo, double hi, const Keep& keep, std::string& text, std::string& why, bool& ok,
-                   const Skip& skip = {}) {
+void exponent_part(Parts& parts, const ThesisCampaign& c, const std::string& case_name, const std::string& x,
+                   const std::string& column, double lo, double hi, const Skip& skip, const Keep& keep = {}) {
   const Series s = series(c, case_name, x, column, keep, skip);
-  if (s.points.size() < 3)
-    return part_missing(why, "case " + case_name + ": " + std::to_string(s.points.size()) + " values of " + x +
-                                 " with " + bare_time(column) + ", need 3" +
-                                 (s.gaps.empty() ? "" : " (" + first_gaps(s.gaps) + ")"));
+  if (!parts.enough(s, 3, case_name, x, column)) return;
   const LineFit f = fit_power(s.xs(), s.ys());
-  ok = ok && f.ok && f.slope >= lo && f.slope <= hi;
-  text += (text.empty() ? "" : "; ") + x + " exponent " + num(f.slope) + " (" + s.listing(x) + ")";
-  if (!s.gaps.empty()) text += " [not counted: " + first_gaps(s.gaps) + "]";
-  return true;
+  parts.add(f.ok && f.slope >= lo && f.slope <= hi, x + " exponent " + num(f.slope) + " (" + s.listing(x) + ")" + not_counted(s));
 }
 
 // Sec. 4.1.1: "for eta > 0, one might make the approximation k tau_R1 ~ Ca eta";
@@ -63,27 +56,15 @@ ClaimResult claim_4_1_1_R1(const ThesisResults& res) {
                         "straight-line fit >= 0.9 and slope > 0; >= 3 values each");
   const ThesisCampaign& c = res.campaign("ch4_2d_tt");
   if (!have_campaign(r, c)) return r;
-  bool ok = true;
-  std::string text, why;
-  const bool have_ca = exponent_part(c, "Ca", "Ca", "two_phase.k_tau_R1", 0.7, 1.3, {}, text, why, ok,
-                                     missed_stop_in(res));
+  Parts parts;
+  exponent_part(parts, c, "Ca", "Ca", "two_phase.k_tau_R1", 0.7, 1.3, missed_stop_in(res));
   const Series s = series(c, "eta", "eta", "two_phase.k_tau_R1", {}, missed_stop_in(res));
-  bool have_eta = s.points.size() >= 3;
-  if (!have_eta) {
-    part_missing(why, "case eta: " + std::to_string(s.points.size()) + " values of eta with k_tau_R1, need 3" +
-                          (s.gaps.empty() ? "" : " (" + first_gaps(s.gaps) + ")"));
-  } else {
+  if (parts.enough(s, 3, "eta", "eta", "two_phase.k_tau_R1")) {
     const LineFit f = fit_line(s.xs(), s.ys());
-    ok = ok && f.ok && f.r_squared >= 0.9 && f.slope > 0;
-    text += (text.empty() ? "" : "; ") + std::string("eta: slope ") + num(f.slope) + ", R^2 " + num(f.r_squared) +
-            " (" + s.listing("eta") + ")" + (s.gaps.empty() ? "" : " [not counted: " + first_gaps(s.gaps) + "]");
+    parts.add(f.ok && f.r_squared >= 0.9 && f.slope > 0,
+              "eta: slope " + num(f.slope) + ", R^2 " + num(f.r_squared) + " (" + s.listing("eta") + ")" + not_counted(s));
   }
-  if (!have_ca || !have_eta) {
-    r.measured = "cannot tell (members missing): " + why + (text.empty() ? "" : "; so far " + text);
-    return r;
-  }
-  set(r, ok, text);
-  return r;
+  return parts.finish(r);
 }
 
 // Sec. 4.1.1: "A comparable approximation of the second recovery phase would be k tau_R2 ~ Ca V / E_b".
@@ -94,19 +75,11 @@ ClaimResult claim_4_1_1_R2(const ThesisResults& res) {
                         "[-1.3, -0.7]; >= 3 values each");
   const ThesisCampaign& c = res.campaign("ch4_2d_tt");
   if (!have_campaign(r, c)) return r;
-  bool ok = true;
-  std::string text, why;
-  bool have = exponent_part(c, "Ca", "Ca", "two_phase.k_tau_R2", 0.7, 1.3, {}, text, why, ok, missed_stop_in(res));
-  have = exponent_part(c, "V", "V", "two_phase.k_tau_R2", 0.7, 1.3, {}, text, why, ok, missed_stop_in(res)) && have;
-  have = exponent_part(c, "E_b", "E_b", "two_phase.k_tau_R2", -1.3, -0.7,
-                       [](const ThesisMember& m) { return parameter(m, "E_b") > 0.0; }, text, why, ok,
-                       missed_stop_in(res)) && have;
-  if (!have) {
-    r.measured = "cannot tell (members missing): " + why + (text.empty() ? "" : "; so far " + text);
-    return r;
-  }
-  set(r, ok, text);
-  return r;
+  Parts parts;
+  for (const char* x : {"Ca", "V"}) exponent_part(parts, c, x, x, "two_phase.k_tau_R2", 0.7, 1.3, missed_stop_in(res));
+  exponent_part(parts, c, "E_b", "E_b", "two_phase.k_tau_R2", -1.3, -0.7, missed_stop_in(res),
+                [](const ThesisMember& m) { return parameter(m, "E_b") > 0.0; });
+  return parts.finish(r);
 }
 
 // Sec. 4.1.1: with E_b = 0 "upon reaching D_min, the capsule underwent no further significant

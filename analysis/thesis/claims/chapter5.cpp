@@ -176,10 +176,8 @@ ClaimResult claim_5_2_pairs(const ThesisResults& res, bool initial) {
 }
 
 ClaimResult claim_5_2_mesh(const ThesisResults& res) {
-  ClaimResult r = claim("5.2", "the power-law model is independent of the mesh (Fig. 59)", "ch5_powerlaw, case mesh",
-                        "(max - min)/mean of D_xy at the end of the shear over the mesh levels at most 0.05; >= 3 levels");
-  judge_spread(res, r, "ch5_powerlaw", "mesh", "/resolution/mesh_level", "level", 0.05, 3);
-  return r;
+  return judge_spread(res, {"5.2", "the power-law model is independent of the mesh (Fig. 59)", "ch5_powerlaw", "mesh",
+                            "/resolution/mesh_level", "level", "the mesh levels", 0.05, 3});
 }
 
 // Sec. 5.2.2: "At this modest oscillation frequency, gamma changes by a factor of 6 - 8 over a period".

@@ -125,6 +125,55 @@ inline bool part_missing(std::string& why, const std::string& reason) {
   return false;
 }
 
+// A claim judged in several parts (one per case or per parameter): each part that has its
+// members adds whether it holds and its numbers; each that lacks them adds the reason. The
+// claim agrees when every part holds, and cannot tell while any part lacks members.
+struct Parts {
+  bool ok = true;
+  std::string text, why;
+
+  void add(bool holds, const std::string& numbers) {
+    ok = ok && holds;
+    text += (text.empty() ? "" : "; ") + numbers;
+  }
+  // False (and the reason kept) when the series has fewer than n points.
+  bool enough(const Series& s, std::size_t n, const std::string& case_name, const std::string& x, const std::string& column) {
+    if (s.points.size() >= n) return true;
+    return part_missing(why, "case " + case_name + ": " + std::to_string(s.points.size()) + " values of " + x + " with " +
+                                 bare_time(column) + ", need " + std::to_string(n) +
+                                 (s.gaps.empty() ? "" : " (" + first_gaps(s.gaps) + ")"));
+  }
+  ClaimResult finish(ClaimResult r) const {
+    if (!why.empty()) r.measured = "cannot tell (members missing): " + why + (text.empty() ? "" : "; so far " + text);
+    else set(r, ok, text);
+    return r;
+  }
+};
+
+// The members left out of a series, as a suffix of its numbers.
+inline std::string not_counted(const Series& s) {
+  return s.gaps.empty() ? std::string("") : " [not counted: " + first_gaps(s.gaps) + "]";
+}
+
+// Both fitted times of a Chapter 3 member, k tau_s (86) and k tau_r (85), of one case against
+// x: `judge` tells whether a time's series holds and writes its numbers. Cannot tell when
+// either time has fewer than `needed` values of x.
+using TimeJudge = std::function<bool(const Series&, std::string& numbers)>;
+inline ClaimResult judge_both_times(ClaimResult r, const ThesisCampaign& c, const std::string& case_name,
+                                    const std::string& x, std::size_t needed, const TimeJudge& judge) {
+  bool ok = true;
+  std::string text;
+  for (const char* column : {"response.k_tau_s", "recovery.k_tau_r"}) {
+    const Series s = series(c, case_name, x, column);
+    if (!have_points(r, s, needed, "values of " + x + " with " + bare_time(column))) return r;
+    std::string numbers;
+    ok = judge(s, numbers) && ok;
+    text += (text.empty() ? "" : "; ") + bare_time(column) + ": " + numbers + " (" + s.listing(x) + ")";
+  }
+  set(r, ok, text);
+  return r;
+}
+
 // Secs. 4.1.1-4.1.2 fit recoveries that start at an inclination (theta = -pi/3, pi/6) or a
 // phase angle (beta = 0.49): a member whose shear was to end there but ran to its cap max_kt
 // recovers from another state and does not stand for the text's point. "" when its stop came,
@@ -230,26 +279,37 @@ inline std::vector<ShearMember> shear_members(const ThesisResults& res, const Th
 // Sec. 5.2: "this power law method ... is independent of the Lagrangian grid" (Fig. 59).
 // D_xy at the stop of a case's members differs by at most `bound` of its mean over `key`'s
 // values (at least `needed` members): mesh independence (Figs. 10, 59), G independence (Fig. 12).
-inline void judge_spread(const ThesisResults& res, ClaimResult& r, const std::string& campaign, const std::string& case_name,
-                  const std::string& key_pointer, const std::string& key_label, double bound, std::size_t needed) {
-  const ThesisCampaign& c = res.campaign(campaign);
-  if (!have_campaign(r, c)) return;
+// `over` names the values in the criterion ("the mesh levels").
+struct SpreadRule {
+  std::string section, statement, campaign, case_name, key_pointer, key_label, over;
+  double bound = 0.0;
+  std::size_t needed = 3;
+};
+inline ClaimResult judge_spread(const ThesisResults& res, const SpreadRule& rule) {
+  ClaimResult r = claim(rule.section, rule.statement, rule.campaign + ", case " + rule.case_name,
+                        "(max - min)/mean of D_xy at the end of the shear over " + rule.over + " at most " +
+                            num(rule.bound) + "; >= " + std::to_string(rule.needed) +
+                            (rule.key_label == "level" ? " levels" : " values"));
+  const auto& key_label = rule.key_label;
+  const ThesisCampaign& c = res.campaign(rule.campaign);
+  if (!have_campaign(r, c)) return r;
   std::string why;
-  const auto ms = shear_members(res, c, case_name, why);
-  if (ms.size() < needed) {
+  const auto ms = shear_members(res, c, rule.case_name, why);
+  if (ms.size() < rule.needed) {
     r.measured = "cannot tell (members missing): " + std::to_string(ms.size()) + " " + key_label +
-                 " values with a member file, need " + std::to_string(needed) +
+                 " values with a member file, need " + std::to_string(rule.needed) +
                  (why.empty() ? std::string("") : " (" + why + ")");
-    return;
+    return r;
   }
   std::vector<double> D;
   std::string text;
   for (const auto& m : ms) {
     D.push_back(m.D_stop);
-    text += (text.empty() ? "" : ", ") + key_label + " " + num(scene_value(*m.data, key_pointer)) + ": " + num(m.D_stop);
+    text += (text.empty() ? "" : ", ") + key_label + " " + num(scene_value(*m.data, rule.key_pointer)) + ": " + num(m.D_stop);
   }
   const double spread = relative_spread(D);
-  set(r, spread <= bound, "spread " + num(spread) + "; D_xy at the stop: " + text);
+  set(r, spread <= rule.bound, "spread " + num(spread) + "; D_xy at the stop: " + text);
+  return r;
 }
 
 }  // namespace capsule::analysis::claims
