@@ -16,7 +16,7 @@ struct CompareEntry {
 };
 
 // A further section of the comparison (`study compare --table2` adds the dissertation's Table 2,
-// analysis/thesis/table2_compare.hpp): given every campaign's bilinear fits, returns Markdown for
+// analysis/dissertation/table2_compare.hpp): given every campaign's bilinear fits, returns Markdown for
 // compare.md, may print and write its own files, and sets status to 1 for a disagreement.
 using CompareSection = std::function<std::string(const std::vector<std::vector<BilinearEntry>>& campaigns,
                                                  int& status, const std::string& out_dir, std::ostream& out)>;

@@ -208,7 +208,7 @@ int main_body(int argc, char** argv) {
   if (*thesis) {
     const std::filesystem::path out = thesis_out.empty() ? std::filesystem::path(results_dir) / "THESIS.md"
                                                          : std::filesystem::path(thesis_out);
-    return write_thesis_comparison(results_dir, out, std::cout);
+    return write_dissertation_comparison(results_dir, out, std::cout);
   }
   if (*exporter) {
     for (const auto& file : campaign_files_of(export_files)) {

@@ -11,9 +11,9 @@
 #include "study/report/report_freshness.hpp"
 
 #include "analysis/compare/campaign_compare.hpp"
-#include "analysis/thesis/table2_compare.hpp"
+#include "analysis/dissertation/table2_compare.hpp"
 #include "analysis/report/report.hpp"
-#include "analysis/thesis/report.hpp"
+#include "analysis/dissertation/report.hpp"
 
 namespace capsule::study {
 
@@ -135,8 +135,8 @@ int compare_campaign_files(const std::vector<std::string>& campaign_files, bool 
                                                     : analysis::CompareSection());
 }
 
-int write_thesis_comparison(const fs::path& results_dir, const fs::path& out_file, std::ostream& out) {
-  const analysis::ThesisSummary s = analysis::write_thesis(results_dir.string(), out_file.string());
+int write_dissertation_comparison(const fs::path& results_dir, const fs::path& out_file, std::ostream& out) {
+  const analysis::DissertationSummary s = analysis::write_dissertation(results_dir.string(), out_file.string());
   out << "wrote " << s.file << "\nclaims: " << s.agrees << " agree, " << s.differs << " differ, " << s.cannot_tell
       << " cannot tell\nTable 2 coefficients: " << s.coefficients_overlap << " overlap, " << s.coefficients_disjoint
       << " do not, " << s.coefficients_unknown << " cannot tell\n";

@@ -1,6 +1,6 @@
 #pragma once
 // `study report` and `study compare`: hand finished members to the analysis library
-// (analysis/report/report.hpp, analysis/compare/campaign_compare.hpp, analysis/thesis/report.hpp).
+// (analysis/report/report.hpp, analysis/compare/campaign_compare.hpp, analysis/dissertation/report.hpp).
 #include <filesystem>
 #include <ostream>
 #include <string>
@@ -24,10 +24,10 @@ int report_campaign(const CampaignSurvey& survey, const ReportOptions& options, 
 int compare_campaign_files(const std::vector<std::string>& campaign_files, bool against_table2,
                            const std::filesystem::path& results_dir, std::ostream& out);
 
-// Writes THESIS.md (analysis::write_thesis) from the shipped results under results_dir:
+// Writes THESIS.md (analysis::write_dissertation) from the shipped results under results_dir:
 // Table 2, the ratios b/a and the claims of Chapters 3-5 against the dissertation. Prints
 // the counts; returns 0 (campaigns not run give "cannot tell", not an error).
-int write_thesis_comparison(const std::filesystem::path& results_dir, const std::filesystem::path& out_file,
+int write_dissertation_comparison(const std::filesystem::path& results_dir, const std::filesystem::path& out_file,
                             std::ostream& out);
 
 }  // namespace capsule::study

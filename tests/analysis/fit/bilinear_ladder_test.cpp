@@ -11,7 +11,7 @@
 #include "analysis/report/analysis_block.hpp"
 #include "analysis/fit/fit_result.hpp"
 #include "analysis/report/report.hpp"
-#include "analysis/thesis/table2_compare.hpp"
+#include "analysis/dissertation/table2_compare.hpp"
 #include "tests/analysis/synthetic_campaign.hpp"
 
 using namespace capsule::analysis;

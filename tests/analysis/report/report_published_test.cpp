@@ -149,13 +149,13 @@ TEST_CASE("Published block: unknown curves and keys are refused with their path"
   CHECK_THROWS_WITH(write_report(req), Contains("/analysis/published: expected a non-empty array"));
 }
 
-#include "analysis/thesis/report.hpp"
-#include "analysis/thesis/validation.hpp"
+#include "analysis/dissertation/report.hpp"
+#include "analysis/dissertation/validation.hpp"
 
 TEST_CASE("THESIS.md validation: the published rows of ch2_3d_ca, and cannot tell without them", "[analysis][published]") {
-  TempDir tmp("thesis_validation");
+  TempDir tmp("dissertation_validation");
   {
-    const ThesisResults none(tmp.path.string());
+    const DissertationResults none(tmp.path.string());
     const Table t = validation_table(none);
     REQUIRE(t.rows.size() == 1);
     CHECK(t.rows[0][10] == "cannot tell");
@@ -169,7 +169,7 @@ TEST_CASE("THESIS.md validation: the published rows of ch2_3d_ca, and cannot tel
                         {"D_xy_last", 0.27}, {"within_digitising_error", "no"}},
                        {{"curve", "sphere_neohookean_V1_rp1998_ca0.2"}, {"reason", "no member with Ca = 0.2"}}};
   std::ofstream(dir / "fits.json") << fits.dump(2);
-  const ThesisResults results(tmp.path.string());
+  const DissertationResults results(tmp.path.string());
   const Table t = validation_table(results);
   REQUIRE(t.rows.size() == 2);
   CHECK(t.rows[0][2] == "Ca0.05");
@@ -177,5 +177,5 @@ TEST_CASE("THESIS.md validation: the published rows of ch2_3d_ca, and cannot tel
   CHECK(t.rows[0][10] == "no");
   CHECK(t.rows[1][10] == "cannot tell");
   CHECK(t.rows[1][11] == "no member with Ca = 0.2");
-  CHECK_THAT(thesis_markdown(results, "r"), Contains("## Validation against published curves"));
+  CHECK_THAT(dissertation_markdown(results, "r"), Contains("## Validation against published curves"));
 }

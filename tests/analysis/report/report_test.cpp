@@ -11,7 +11,7 @@
 #include <unistd.h>
 
 #include "analysis/compare/campaign_compare.hpp"
-#include "analysis/thesis/table2_compare.hpp"
+#include "analysis/dissertation/table2_compare.hpp"
 #include "analysis/report/plot_script.hpp"
 #include "analysis/report/report.hpp"
 #include "tests/analysis/synthetic_campaign.hpp"

@@ -1,19 +1,19 @@
 // The claims of the dissertation's Chapter 5 (membrane viscosity), each a rule with a stated numeric
 // criterion (claims/support.hpp).
-#include "analysis/thesis/claims/chapters.hpp"
-#include "analysis/thesis/claims/support.hpp"
+#include "analysis/dissertation/claims/chapters.hpp"
+#include "analysis/dissertation/claims/support.hpp"
 
 namespace capsule::analysis::claims {
 
 // Sec. 5.1.2: "the derived relationship between V and tau_r matches very well. The results for
 // tau_s are still acceptable, but noticeably poorer" (Figs. 55, 56).
-ClaimResult claim_5_1_2(const ThesisResults& res, const std::string& campaign, double V_base, const std::string& figure) {
+ClaimResult claim_5_1_2(const DissertationResults& res, const std::string& campaign, double V_base, const std::string& figure) {
   ClaimResult r = claim("5.1.2", "V* = V + (a/b) eta (98) reproduces k tau_r well and k tau_s less well (" + figure + ")",
                         campaign + " (members with eta > 0 at V = " + num(V_base) + " against the eta = 0 members)",
                         "mean |k tau - line(V*)| / k tau over the eta > 0 members at V = " + num(V_base) +
                             ", line = straight-line fit of k tau against V of the eta = 0 members, a/b from the "
                             "campaign's bilinear fit: at most 0.1 for k tau_r and below that of k tau_s");
-  const ThesisCampaign& c = res.campaign(campaign);
+  const DissertationCampaign& c = res.campaign(campaign);
   if (!have_campaign(r, c)) return r;
   const auto bilinear = read_bilinear_entries(campaign, c.fits);
   double err[2] = {k_nan, k_nan};
@@ -28,13 +28,13 @@ ClaimResult claim_5_1_2(const ThesisResults& res, const std::string& campaign, d
     }
     const double a_over_b = b->fit.parameter("a")->value / b->fit.parameter("b")->value;
     // With a resolution ladder (bilinear.ladder), only the members of the fit's (finest) level.
-    const auto at_level = [&](const ThesisMember& m) {
+    const auto at_level = [&](const DissertationMember& m) {
       return b->level_key.empty() || parameter(m, b->level_key) == b->level;
     };
-    const Series base = series(c, "", "V", cols[k], [&](const ThesisMember& m) {
+    const Series base = series(c, "", "V", cols[k], [&](const DissertationMember& m) {
       return at_level(m) && parameter(m, "eta") == 0.0;
     });
-    const Series visco = series(c, "", "eta", cols[k], [&](const ThesisMember& m) {
+    const Series visco = series(c, "", "eta", cols[k], [&](const DissertationMember& m) {
       return at_level(m) && parameter(m, "eta") > 0.0 && std::abs(parameter(m, "V") - V_base) < 1e-9;
     });
     if (!have_points(r, base, 3, "eta = 0 members with " + bare_time(cols[k])) ||
@@ -79,13 +79,13 @@ struct ResolutionShift {
 };
 
 template <class Value>
-std::optional<ResolutionShift> resolution_shift(const ThesisResults& res, const ThesisCampaign& c, const ShearMember& fine,
+std::optional<ResolutionShift> resolution_shift(const DissertationResults& res, const DissertationCampaign& c, const ShearMember& fine,
                                                 const Value& value) {
   std::optional<ResolutionShift> best;
   for (const auto& [key, spacing] : c.ladder_keys) {
     const auto f = fine.member->parameters.find(key);
     if (f == fine.member->parameters.end()) continue;
-    for (const ThesisMember* m : c.in_case_all_levels(fine.member->case_name)) {
+    for (const DissertationMember* m : c.in_case_all_levels(fine.member->case_name)) {
       if (!m->coarse || m->finer != fine.member->slug) continue;
       const auto l = m->parameters.find(key);
       if (l == m->parameters.end()) continue;
@@ -102,7 +102,7 @@ std::optional<ResolutionShift> resolution_shift(const ThesisResults& res, const 
   return best;
 }
 
-ClaimResult claim_5_2_pairs(const ThesisResults& res, bool initial) {
+ClaimResult claim_5_2_pairs(const DissertationResults& res, bool initial) {
   const char* tested = "ch5_powerlaw, case K (n = 0.64) against the Kelvin-Voigt members (cases kv, kv_physical) of equal "
                        "physical surface viscosity (eta = K, physical reading of (63))";
   ClaimResult r = initial ? claim("5.2.1", "power law and Kelvin-Voigt give nearly the same initial deformation for mu_s = 1000 K pairs (Figs. 62-63)",
@@ -111,7 +111,7 @@ ClaimResult claim_5_2_pairs(const ThesisResults& res, bool initial) {
                                   "for every pair")
                           : claim("5.2.1", "the power law gives a slightly smaller steady D_xy than Kelvin-Voigt (Figs. 62-63)",
                                   tested, "0 < (D_kv - D_power)/D_kv <= 0.2 at the end of the shear, for every pair");
-  const ThesisCampaign& c = res.campaign("ch5_powerlaw");
+  const DissertationCampaign& c = res.campaign("ch5_powerlaw");
   if (!have_campaign(r, c)) return r;
   std::string why;
   const auto power = shear_members(res, c, "K", why);
@@ -175,22 +175,22 @@ ClaimResult claim_5_2_pairs(const ThesisResults& res, bool initial) {
   return r;
 }
 
-ClaimResult claim_5_2_mesh(const ThesisResults& res) {
+ClaimResult claim_5_2_mesh(const DissertationResults& res) {
   return judge_spread(res, {"5.2", "the power-law model is independent of the mesh (Fig. 59)", "ch5_powerlaw", "mesh",
                             "/resolution/mesh_level", "level", "the mesh levels", 0.05, 3});
 }
 
 // Sec. 5.2.2: "At this modest oscillation frequency, gamma changes by a factor of 6 - 8 over a period".
-ClaimResult claim_5_2_gamma(const ThesisResults& res) {
+ClaimResult claim_5_2_gamma(const DissertationResults& res) {
   ClaimResult r = claim("5.2.2", "the maximum surface shear rate varies by a factor 6-8 over an oscillation period (Fig. 67)",
                         "ch5_oscillatory, power-law cases",
                         "max / min of gamma_max over the last 2T of the shear (one full period of sin(pi t/T)) within "
                         "[5.5, 8.5], for every power-law member");
-  const ThesisCampaign& c = res.campaign("ch5_oscillatory");
+  const DissertationCampaign& c = res.campaign("ch5_oscillatory");
   if (!have_campaign(r, c)) return r;
   bool ok = true, judged = false;
   std::string text, why;
-  for (const ThesisMember* m : c.in_case("")) {
+  for (const DissertationMember* m : c.in_case("")) {
     std::string w;
     const auto d = res.member_data(*m, w);
     if (!d) {

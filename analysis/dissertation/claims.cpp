@@ -1,12 +1,12 @@
-#include "analysis/thesis/claims.hpp"
+#include "analysis/dissertation/claims.hpp"
 
-#include "analysis/thesis/claims/chapters.hpp"
+#include "analysis/dissertation/claims/chapters.hpp"
 
 namespace capsule::analysis {
 
 using namespace claims;
 
-std::vector<ClaimResult> evaluate_claims(const ThesisResults& res) {
+std::vector<ClaimResult> evaluate_claims(const DissertationResults& res) {
   std::vector<ClaimResult> out;
   out.push_back(claim_2_mesh(res));
   out.push_back(claim_2_G(res));

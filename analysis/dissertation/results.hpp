@@ -14,7 +14,7 @@
 
 namespace capsule::analysis {
 
-struct ThesisMember {
+struct DissertationMember {
   std::string id, slug, case_name, status;    // status: the member file's, as fits.json recorded it
   std::map<std::string, double> parameters;   // as fits.json recorded them (Ca, E_b, V, eta, table x's)
   MemberFits fits;                            // parsed from fits.json
@@ -27,41 +27,41 @@ struct ThesisMember {
   std::string finer;
 };
 
-struct ThesisCampaign {
+struct DissertationCampaign {
   std::string name;
   bool found = false;
   std::string missing;  // why not found: "campaign X not run (no <dir>/X/report/fits.json)"
   nlohmann::json fits;
-  std::vector<ThesisMember> members;
+  std::vector<DissertationMember> members;
   // The campaign's resolution ladder keys (analysis ladder[].key, bilinear.ladder) with
   // their spacing ("1/x", "2^-x", "x"), read from fits.json's analysis block.
   std::map<std::string, std::string> ladder_keys;
 
   // Members of one case ("" = every case), each slug once (a member shared by several
   // cases is listed in fits.json once per case), without the coarse members of a ladder.
-  std::vector<const ThesisMember*> in_case(const std::string& case_name) const;
+  std::vector<const DissertationMember*> in_case(const std::string& case_name) const;
   // The same with the coarse members too.
-  std::vector<const ThesisMember*> in_case_all_levels(const std::string& case_name) const;
+  std::vector<const DissertationMember*> in_case_all_levels(const std::string& case_name) const;
   // "resolution.a: 7 (6 members), 5 (4 members)": the ladder levels the claims judge;
   // "" without a ladder.
   std::string judged_levels() const;
 };
 
-class ThesisResults {
+class DissertationResults {
  public:
-  explicit ThesisResults(std::string results_dir);
+  explicit DissertationResults(std::string results_dir);
   const std::string& results_dir() const { return dir_; }
   // Loaded on first use and kept. Throws std::runtime_error for a fits.json that is not valid JSON.
-  const ThesisCampaign& campaign(const std::string& name) const;
+  const DissertationCampaign& campaign(const std::string& name) const;
   // The member file's contents; nullopt with `why` set when missing, unreadable or not
   // complete. With accept_unstable, a member that ended unstable is returned too (its rows
   // up to the blow-up are results: the text's own 3D recoveries end in instability).
-  std::optional<io::MemberData> member_data(const ThesisMember& m, std::string& why,
+  std::optional<io::MemberData> member_data(const DissertationMember& m, std::string& why,
                                             bool accept_unstable = false) const;
 
  private:
   std::string dir_;
-  mutable std::map<std::string, ThesisCampaign> campaigns_;
+  mutable std::map<std::string, DissertationCampaign> campaigns_;
 };
 
 // Where a member file recorded as `recorded` lives for a campaign whose results folder
@@ -74,6 +74,6 @@ std::string resolve_member_file(const std::string& campaign_root, const std::str
 // case and the same recorded parameters apart from the ladder keys) at a coarser level of a
 // key than another member of that point. A member whose fits.json entry lacks the key's
 // value is never coarse.
-void mark_coarse_members(ThesisCampaign& c);
+void mark_coarse_members(DissertationCampaign& c);
 
 }  // namespace capsule::analysis

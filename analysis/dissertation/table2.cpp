@@ -1,4 +1,4 @@
-#include "analysis/thesis/table2.hpp"
+#include "analysis/dissertation/table2.hpp"
 
 #include <cmath>
 
@@ -19,7 +19,7 @@ const std::vector<Table2Ensemble>& table2_ensembles() {
   return e;
 }
 
-std::vector<Table2RowComparison> compare_table2_rows(const ThesisResults& results) {
+std::vector<Table2RowComparison> compare_table2_rows(const DissertationResults& results) {
   std::vector<Table2RowComparison> out;
   for (const Table2Row& ref : table2_dissertation()) {
     Table2RowComparison row;
@@ -31,7 +31,7 @@ std::vector<Table2RowComparison> compare_table2_rows(const ThesisResults& result
       out.push_back(row);
       continue;
     }
-    const ThesisCampaign& c = results.campaign(row.ensemble->campaign);
+    const DissertationCampaign& c = results.campaign(row.ensemble->campaign);
     if (!c.found) {
       row.why = c.missing;
       out.push_back(row);

@@ -14,8 +14,8 @@
 #include "analysis/report/report_context.hpp"
 #include "analysis/fit/resolution_ladder.hpp"
 #include "analysis/report/scene_parameter.hpp"
-#include "analysis/thesis/table2_compare.hpp"
-#include "analysis/thesis/claims.hpp"
+#include "analysis/dissertation/table2_compare.hpp"
+#include "analysis/dissertation/claims.hpp"
 
 namespace capsule::analysis::claims {
 
@@ -25,14 +25,14 @@ constexpr double k_D_biconcave_3d = 0.51;
 
 inline std::string num(double x) { return short_number(x); }
 
-inline double parameter(const ThesisMember& m, const std::string& name) {
+inline double parameter(const DissertationMember& m, const std::string& name) {
   const auto it = m.parameters.find(name);
   return it == m.parameters.end() ? k_nan : it->second;
 }
 
 struct Point {
   double x = 0.0, y = 0.0;
-  const ThesisMember* member = nullptr;
+  const DissertationMember* member = nullptr;
 };
 
 // One fitted time of the members of a case against a parameter, sorted by x, with the
@@ -57,14 +57,14 @@ struct Series {
   }
 };
 
-using Keep = std::function<bool(const ThesisMember&)>;
+using Keep = std::function<bool(const DissertationMember&)>;
 // Why a member cannot stand for the text's point ("" when it can): it is listed among the gaps.
-using Skip = std::function<std::string(const ThesisMember&)>;
+using Skip = std::function<std::string(const DissertationMember&)>;
 
-inline Series series(const ThesisCampaign& c, const std::string& case_name, const std::string& x, const std::string& column,
+inline Series series(const DissertationCampaign& c, const std::string& case_name, const std::string& x, const std::string& column,
               const Keep& keep = {}, const Skip& skip = {}) {
   Series s;
-  for (const ThesisMember* m : c.in_case(case_name)) {
+  for (const DissertationMember* m : c.in_case(case_name)) {
     if (keep && !keep(*m)) continue;
     if (skip) {
       if (const std::string why = skip(*m); !why.empty()) {
@@ -99,7 +99,7 @@ inline std::string first_gaps(const std::vector<std::string>& gaps) {
 }
 
 // False (and r.measured says why) when the campaign is not there.
-inline bool have_campaign(ClaimResult& r, const ThesisCampaign& c) {
+inline bool have_campaign(ClaimResult& r, const DissertationCampaign& c) {
   if (c.found) return true;
   r.measured = "cannot tell: " + c.missing;
   return false;
@@ -159,7 +159,7 @@ inline std::string not_counted(const Series& s) {
 // x: `judge` tells whether a time's series holds and writes its numbers. Cannot tell when
 // either time has fewer than `needed` values of x.
 using TimeJudge = std::function<bool(const Series&, std::string& numbers)>;
-inline ClaimResult judge_both_times(ClaimResult r, const ThesisCampaign& c, const std::string& case_name,
+inline ClaimResult judge_both_times(ClaimResult r, const DissertationCampaign& c, const std::string& case_name,
                                     const std::string& x, std::size_t needed, const TimeJudge& judge) {
   bool ok = true;
   std::string text;
@@ -179,7 +179,7 @@ inline ClaimResult judge_both_times(ClaimResult r, const ThesisCampaign& c, cons
 // recovers from another state and does not stand for the text's point. "" when its stop came,
 // when the shear ends otherwise, or when the member file is not there to tell (its fits.json
 // entry is judged as recorded).
-inline std::string missed_stop(const ThesisResults& res, const ThesisMember& m) {
+inline std::string missed_stop(const DissertationResults& res, const DissertationMember& m) {
   std::string why;
   const auto data = res.member_data(m, why, true);
   if (!data) return "";
@@ -204,7 +204,7 @@ inline std::string missed_stop(const ThesisResults& res, const ThesisMember& m) 
 // smooth model fits such a series. Says so when D_xy jumps by more than 0.2 within one output
 // interval at a rate above 5 per kt (ten times the fastest recovery the text reports: 0.4 of
 // D_xy over 3 tau_R1 = 0.85 kt) in the first kt after the stop; "" otherwise.
-inline std::string folded_note(const ThesisResults& res, const ThesisMember& m) {
+inline std::string folded_note(const DissertationResults& res, const DissertationMember& m) {
   std::string why;
   const auto data = res.member_data(m, why, true);
   if (!data || !data->series.count("kt") || !data->series.count("D_xy") || !data->markers.count("t_stop")) return "";
@@ -223,8 +223,8 @@ inline std::string folded_note(const ThesisResults& res, const ThesisMember& m) 
          ": a folded outline, whose chords (37) are discontinuous)";
 }
 
-inline Skip missed_stop_in(const ThesisResults& res) {
-  return [&res](const ThesisMember& m) { return missed_stop(res, m); };
+inline Skip missed_stop_in(const DissertationResults& res) {
+  return [&res](const DissertationMember& m) { return missed_stop(res, m); };
 }
 
 inline bool is_refused_for_r2(const FitResult& f) { return !f.ok && f.reason.rfind("the model does not describe the data", 0) == 0; }
@@ -239,14 +239,14 @@ inline double scene_value(const io::MemberData& d, const std::string& pointer) {
 }
 
 struct ShearMember {
-  const ThesisMember* member = nullptr;
+  const DissertationMember* member = nullptr;
   std::optional<io::MemberData> data;
   double D_at_1 = k_nan, D_stop = k_nan;
 };
 
 // A member's D_xy at kt 1 and at the stop (its last row without a t_stop); nullopt with `why`
 // set when the file or its kt / D_xy series is missing.
-inline std::optional<ShearMember> shear_member(const ThesisResults& res, const ThesisMember& m, std::string& why) {
+inline std::optional<ShearMember> shear_member(const DissertationResults& res, const DissertationMember& m, std::string& why) {
   ShearMember s;
   s.member = &m;
   s.data = res.member_data(m, why);
@@ -265,10 +265,10 @@ inline std::optional<ShearMember> shear_member(const ThesisResults& res, const T
   return s;
 }
 
-inline std::vector<ShearMember> shear_members(const ThesisResults& res, const ThesisCampaign& c, const std::string& case_name,
+inline std::vector<ShearMember> shear_members(const DissertationResults& res, const DissertationCampaign& c, const std::string& case_name,
                                        std::string& why) {
   std::vector<ShearMember> out;
-  for (const ThesisMember* m : c.in_case(case_name)) {
+  for (const DissertationMember* m : c.in_case(case_name)) {
     std::string w;
     if (auto s = shear_member(res, *m, w)) out.push_back(std::move(*s));
     else why += (why.empty() ? "" : "; ") + w;
@@ -285,13 +285,13 @@ struct SpreadRule {
   double bound = 0.0;
   std::size_t needed = 3;
 };
-inline ClaimResult judge_spread(const ThesisResults& res, const SpreadRule& rule) {
+inline ClaimResult judge_spread(const DissertationResults& res, const SpreadRule& rule) {
   ClaimResult r = claim(rule.section, rule.statement, rule.campaign + ", case " + rule.case_name,
                         "(max - min)/mean of D_xy at the end of the shear over " + rule.over + " at most " +
                             num(rule.bound) + "; >= " + std::to_string(rule.needed) +
                             (rule.key_label == "level" ? " levels" : " values"));
   const auto& key_label = rule.key_label;
-  const ThesisCampaign& c = res.campaign(rule.campaign);
+  const DissertationCampaign& c = res.campaign(rule.campaign);
   if (!have_campaign(r, c)) return r;
   std::string why;
   const auto ms = shear_members(res, c, rule.case_name, why);

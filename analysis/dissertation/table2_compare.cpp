@@ -1,4 +1,4 @@
-#include "analysis/thesis/table2_compare.hpp"
+#include "analysis/dissertation/table2_compare.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,20 +1,20 @@
 // The claims of the dissertation's Chapter 2 (validation: mesh and G independence), each a rule with a stated numeric
 // criterion (claims/support.hpp).
-#include "analysis/thesis/claims/chapters.hpp"
-#include "analysis/thesis/claims/support.hpp"
+#include "analysis/dissertation/claims/chapters.hpp"
+#include "analysis/dissertation/claims/support.hpp"
 
 namespace capsule::analysis::claims {
 
 // Sec. 2 (Fig. 10): "The convergence of the viscoelastic algorithm is considered ... for
 // increasingly fine meshes and is seen to converge nicely."
-ClaimResult claim_2_mesh(const ThesisResults& res) {
+ClaimResult claim_2_mesh(const DissertationResults& res) {
   return judge_spread(res, {"2", "the viscoelastic (SLS) sphere converges with the mesh (Fig. 10)", "ch2_3d_visco", "mesh",
                             "/resolution/mesh_level", "level", "1280 / 5120 / 20480 triangles", 0.02, 3});
 }
 
 // Sec. 2 (Fig. 12): "the difference between the deformation for G = 10 and G = 25 is almost
 // indiscernible".
-ClaimResult claim_2_G(const ThesisResults& res) {
+ClaimResult claim_2_G(const DissertationResults& res) {
   return judge_spread(res, {"2", "G = 10, 25 and 50 deform almost indiscernibly: the SLS approaches Kelvin-Voigt (Fig. 12)",
                             "ch2_3d_visco", "G", "/G", "G", "the G values", 0.02, 3});
 }

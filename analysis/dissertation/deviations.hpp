@@ -1,7 +1,7 @@
 #pragma once
 // "Known causes of disagreement": where the toolkit departs from the dissertation on
 // purpose, or measures something the text does not control, with the claims each one
-// moves. Written in analysis/thesis/deviations.md (embedded at build time), in one place:
+// moves. Written in analysis/dissertation/deviations.md (embedded at build time), in one place:
 // THESIS.md prints it, docs/findings/dissertation_comparison.md points to it.
 #include <string>
 #include <vector>

@@ -1,17 +1,17 @@
-#include "analysis/thesis/report.hpp"
+#include "analysis/dissertation/report.hpp"
 
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
 
-#include "analysis/thesis/deviations.hpp"
-#include "analysis/thesis/validation.hpp"
+#include "analysis/dissertation/deviations.hpp"
+#include "analysis/dissertation/validation.hpp"
 
 namespace capsule::analysis {
 
 namespace fs = std::filesystem;
 
-const std::vector<std::string>& thesis_campaigns() {
+const std::vector<std::string>& dissertation_campaigns() {
   static const std::vector<std::string> c = {
       "ch2_3d_visco", "ch3_ca", "ch3_eb", "ch3_v", "ch3_eta", "ch4_2d_tt", "ch4_2d_tumble", "ch4_3d_cases",
       "ch5_bilinear_ca005", "ch5_bilinear_ca005_eb", "ch5_bilinear_ca02", "ch5_powerlaw", "ch5_oscillatory"};
@@ -20,15 +20,15 @@ const std::vector<std::string>& thesis_campaigns() {
 
 namespace {
 
-Table campaign_table(const ThesisResults& results) {
+Table campaign_table(const DissertationResults& results) {
   Table t;
   t.title = "Campaigns read";
   t.header = {"campaign", "fits.json", "members in it", "complete", "member files found",
               "ladder levels judged (finest shipped per point)"};
   std::vector<std::string> names = validation_campaigns();
-  names.insert(names.end(), thesis_campaigns().begin(), thesis_campaigns().end());
+  names.insert(names.end(), dissertation_campaigns().begin(), dissertation_campaigns().end());
   for (const auto& name : names) {
-    const ThesisCampaign& c = results.campaign(name);
+    const DissertationCampaign& c = results.campaign(name);
     if (!c.found) {
       t.rows.push_back({name, "not run", "", "", "", ""});
       continue;
@@ -56,8 +56,8 @@ Table claims_table(const std::vector<ClaimResult>& claims) {
 
 }  // namespace
 
-std::string thesis_markdown(const ThesisResults& results, const std::string& results_label, ThesisSummary* summary) {
-  ThesisSummary s;
+std::string dissertation_markdown(const DissertationResults& results, const std::string& results_label, DissertationSummary* summary) {
+  DissertationSummary s;
   const auto rows = compare_table2_rows(results);
   for (const auto& row : rows) {
     if (!row.found) {
@@ -93,31 +93,35 @@ std::string thesis_markdown(const ThesisResults& results, const std::string& res
         std::to_string(s.coefficients_disjoint) + " without, " + std::to_string(s.coefficients_unknown) +
         " cannot tell (of 18).\n\n";
   md += campaign_table(results).to_markdown() + "\n";
-  md += "## Validation against published curves (Ch. 2, Fig. 7)\n\n";
-  md += "The text compares its 3D solver with Ramanujan and Pozrikidis (1998) and finds \"excellent agreement\" "
-        "for the neo-Hookean sphere at V = 1 (Fig. 7; Sec. 2). The toolkit's members at the campaign's resolution "
-        "against the same digitised curves (digitising error about +-0.005 in D); D_xy is the inertia-ellipsoid "
-        "measure (38), D_extent the extent measure of the paper. The toolkit's excess falls with resolution (at Ca = "
-        "0.05: 8.1 / 6.5 / 5.3 % at a = 5 / 10 / 15, solver/membrane3d/README.md \"Validation\"): a resolution error "
-        "of the immersed boundary, which the text's a = 10 shares.\n\n";
-  md += validation_table(results).to_markdown() + "\n";
-  md += "## Table 2 (Sec. 5.1.1)\n\n";
-  md += "Each row of the dissertation's Table 2 beside the bilinear fit (95)-(96) of the campaign that regenerates "
-        "it; overlap: the two 95 % intervals share a point. The text gives R^2 > 0.99 for every k tau_r fit and about "
-        "0.91 / 0.96 / 0.95 for k tau_s.\n\n";
-  md += table2_side_by_side(rows).to_markdown() + "\n";
-  md += "## Ratios b/a (Sec. 5.1.1)\n\n";
-  md += "The text quotes b_s/a_s ~ 2.8, 3.5, 3.5 and b_r/a_r ~ 5, 4.6, 4.1. \"From Table 2\": b/a of the printed "
-        "coefficients, its interval by the first-order delta method from their 95 % half-widths, a and b taken as "
-        "independent (the text gives no covariance). The toolkit's interval uses the fit's covariance of a and b "
-        "when fits.json carries it (delta method, times Student's t with N - 3 degrees of freedom), else the same "
-        "half-width rule; the last column says which.\n\n";
-  md += table2_ratios(rows).to_markdown() + "\n";
-  md += "## Claims of Chapters 2-5\n\n";
-  md += "Each claim of the text is a rule with a numeric criterion, judged from the fitted times (and, where it is "
-        "about a curve, the member files) of the campaign named. *agrees*: the criterion holds; *differs*: it does "
-        "not (the numbers say by how much); *cannot tell*: the campaign or members it needs are missing.\n\n";
-  md += claims_table(claims).to_markdown() + "\n";
+  // One section: its title, what it shows, and its table.
+  const auto section = [&md](const std::string& title, const std::string& intro, const Table& table) {
+    md += "## " + title + "\n\n" + intro + "\n\n" + table.to_markdown() + "\n";
+  };
+  section("Validation against published curves (Ch. 2, Fig. 7)",
+          "The text compares its 3D solver with Ramanujan and Pozrikidis (1998) and finds \"excellent agreement\" for "
+          "the neo-Hookean sphere at V = 1 (Fig. 7; Sec. 2). The toolkit's members at the campaign's resolution "
+          "against the same digitised curves (digitising error about +-0.005 in D); D_xy is the inertia-ellipsoid "
+          "measure (38), D_extent the extent measure of the paper. The toolkit's excess falls with resolution "
+          "(solver/membrane3d/README.md \"Validation\"; \"Resolution and the immersed boundary\" below): a "
+          "resolution error of the immersed boundary, which the text's a = 10 shares.",
+          validation_table(results));
+  section("Table 2 (Sec. 5.1.1)",
+          "Each row of the dissertation's Table 2 beside the bilinear fit (95)-(96) of the campaign that regenerates "
+          "it; overlap: the two 95 % intervals share a point. The text gives R^2 > 0.99 for every k tau_r fit and "
+          "about 0.91 / 0.96 / 0.95 for k tau_s.",
+          table2_side_by_side(rows));
+  section("Ratios b/a (Sec. 5.1.1)",
+          "The text quotes b_s/a_s ~ 2.8, 3.5, 3.5 and b_r/a_r ~ 5, 4.6, 4.1. \"From Table 2\": b/a of the printed "
+          "coefficients, its interval by the first-order delta method from their 95 % half-widths, a and b taken as "
+          "independent (the text gives no covariance). The toolkit's interval uses the fit's covariance of a and b "
+          "when fits.json carries it (delta method, times Student's t with N - 3 degrees of freedom), else the same "
+          "half-width rule; the last column says which.",
+          table2_ratios(rows));
+  section("Claims of Chapters 2-5",
+          "Each claim of the text is a rule with a numeric criterion, judged from the fitted times (and, where it is "
+          "about a curve, the member files) of the campaign named. *agrees*: the criterion holds; *differs*: it does "
+          "not (the numbers say by how much); *cannot tell*: the campaign or members it needs are missing.",
+          claims_table(claims));
   md += "## Known causes of disagreement\n\n";
   md += "Where the toolkit departs from the text on purpose, or measures what the text does not control. Before "
         "reading a *differs* as an error of either, check whether one of these moves it.\n\n";
@@ -126,10 +130,10 @@ std::string thesis_markdown(const ThesisResults& results, const std::string& res
   return md;
 }
 
-ThesisSummary write_thesis(const std::string& results_dir, const std::string& out_file) {
-  const ThesisResults results(results_dir);
-  ThesisSummary s;
-  const std::string md = thesis_markdown(results, results_dir, &s);
+DissertationSummary write_dissertation(const std::string& results_dir, const std::string& out_file) {
+  const DissertationResults results(results_dir);
+  DissertationSummary s;
+  const std::string md = dissertation_markdown(results, results_dir, &s);
   const fs::path out(out_file);
   if (out.has_parent_path()) fs::create_directories(out.parent_path());
   std::ofstream f(out);

@@ -1,4 +1,4 @@
-#include "analysis/thesis/table2_reference.hpp"
+#include "analysis/dissertation/table2_reference.hpp"
 
 #include <sstream>
 #include <stdexcept>

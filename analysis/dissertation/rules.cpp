@@ -1,4 +1,4 @@
-#include "analysis/thesis/rules.hpp"
+#include "analysis/dissertation/rules.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // The claims of the dissertation's Chapter 4 (the biconcave capsule), each a rule with a stated numeric
 // criterion (claims/support.hpp).
-#include "analysis/thesis/claims/chapters.hpp"
-#include "analysis/thesis/claims/support.hpp"
+#include "analysis/dissertation/claims/chapters.hpp"
+#include "analysis/dissertation/claims/support.hpp"
 
 namespace capsule::analysis::claims {
 
@@ -16,13 +16,13 @@ std::string order_band(int order) {
 }
 
 // Medians of two fitted times in the bands of O(10^o1) and O(10^o2).
-ClaimResult claim_orders(const ThesisResults& res, const std::string& section, const std::string& statement,
+ClaimResult claim_orders(const DissertationResults& res, const std::string& section, const std::string& statement,
                          const std::string& campaign, const std::string& fit, int o1, int o2) {
   ClaimResult r = claim(section, statement, campaign,
                         "median k tau_R1 in " + order_band(o1) + " and median k tau_R2 in " + order_band(o2) +
                             " (round(log10) = " + std::to_string(o1) + " and " + std::to_string(o2) +
                             ") over every member with the fit; >= 3 members");
-  const ThesisCampaign& c = res.campaign(campaign);
+  const DissertationCampaign& c = res.campaign(campaign);
   if (!have_campaign(r, c)) return r;
   const Series s1 = series(c, "", "Ca", fit + ".k_tau_R1", {}, missed_stop_in(res));
   const Series s2 = series(c, "", "Ca", fit + ".k_tau_R2", {}, missed_stop_in(res));
@@ -40,7 +40,7 @@ ClaimResult claim_orders(const ThesisResults& res, const std::string& section, c
 }
 
 // Exponent of a fitted time against one parameter of a case, judged against [lo, hi].
-void exponent_part(Parts& parts, const ThesisCampaign& c, const std::string& case_name, const std::string& x,
+void exponent_part(Parts& parts, const DissertationCampaign& c, const std::string& case_name, const std::string& x,
                    const std::string& column, double lo, double hi, const Skip& skip, const Keep& keep = {}) {
   const Series s = series(c, case_name, x, column, keep, skip);
   if (!parts.enough(s, 3, case_name, x, column)) return;
@@ -50,11 +50,11 @@ void exponent_part(Parts& parts, const ThesisCampaign& c, const std::string& cas
 
 // Sec. 4.1.1: "for eta > 0, one might make the approximation k tau_R1 ~ Ca eta";
 // "a significant linear relationship prevailed between k tau_R1 and eta".
-ClaimResult claim_4_1_1_R1(const ThesisResults& res) {
+ClaimResult claim_4_1_1_R1(const DissertationResults& res) {
   ClaimResult r = claim("4.1.1", "k tau_R1 ~ Ca eta (tank-treading 2D biconcave)", "ch4_2d_tt, cases Ca and eta",
                         "exponent of k tau_R1 ~ Ca^p within [0.7, 1.3]; k tau_R1 against eta linear: R^2 of a "
                         "straight-line fit >= 0.9 and slope > 0; >= 3 values each");
-  const ThesisCampaign& c = res.campaign("ch4_2d_tt");
+  const DissertationCampaign& c = res.campaign("ch4_2d_tt");
   if (!have_campaign(r, c)) return r;
   Parts parts;
   exponent_part(parts, c, "Ca", "Ca", "two_phase.k_tau_R1", 0.7, 1.3, missed_stop_in(res));
@@ -68,27 +68,27 @@ ClaimResult claim_4_1_1_R1(const ThesisResults& res) {
 }
 
 // Sec. 4.1.1: "A comparable approximation of the second recovery phase would be k tau_R2 ~ Ca V / E_b".
-ClaimResult claim_4_1_1_R2(const ThesisResults& res) {
+ClaimResult claim_4_1_1_R2(const DissertationResults& res) {
   ClaimResult r = claim("4.1.1", "k tau_R2 ~ Ca V / E_b (tank-treading 2D biconcave)",
                         "ch4_2d_tt, cases Ca, V and E_b",
                         "exponents of k tau_R2 against Ca and V within [0.7, 1.3], against E_b (E_b > 0) within "
                         "[-1.3, -0.7]; >= 3 values each");
-  const ThesisCampaign& c = res.campaign("ch4_2d_tt");
+  const DissertationCampaign& c = res.campaign("ch4_2d_tt");
   if (!have_campaign(r, c)) return r;
   Parts parts;
   for (const char* x : {"Ca", "V"}) exponent_part(parts, c, x, x, "two_phase.k_tau_R2", 0.7, 1.3, missed_stop_in(res));
   exponent_part(parts, c, "E_b", "E_b", "two_phase.k_tau_R2", -1.3, -0.7, missed_stop_in(res),
-                [](const ThesisMember& m) { return parameter(m, "E_b") > 0.0; });
+                [](const DissertationMember& m) { return parameter(m, "E_b") > 0.0; });
   return parts.finish(r);
 }
 
 // Sec. 4.1.1: with E_b = 0 "upon reaching D_min, the capsule underwent no further significant
 // change in shape; thus D_min ~ D_inf ... this shape is not recovered".
-ClaimResult claim_4_1_1_no_bending(const ThesisResults& res) {
+ClaimResult claim_4_1_1_no_bending(const DissertationResults& res) {
   ClaimResult r = claim("4.1.1", "no recovery of biconcavity at E_b = 0 (Fig. 23)", "ch4_2d_tt, case no_bending",
                         "recovered share (D_end - D_min)/(0.812 - D_min) of the recovery at most 0.2, D_min the least "
                         "D_xy after the stop, D_end the last, 0.812 the undeformed D_xy");
-  const ThesisCampaign& c = res.campaign("ch4_2d_tt");
+  const DissertationCampaign& c = res.campaign("ch4_2d_tt");
   if (!have_campaign(r, c)) return r;
   const auto members = c.in_case("no_bending");
   if (members.empty()) {
@@ -124,16 +124,16 @@ ClaimResult claim_4_1_1_no_bending(const ThesisResults& res) {
 }
 
 // Sec. 4.1.2: "this model fit the results with a coefficient of correlation R^2 > 0.97".
-ClaimResult claim_4_1_2_r2(const ThesisResults& res) {
+ClaimResult claim_4_1_2_r2(const DissertationResults& res) {
   ClaimResult r = claim("4.1.2", "tumbling recovery fitted by (90) with R^2 > 0.97", "ch4_2d_tumble (every case)",
                         "every double exponential (90) fit R^2 > 0.97 (a fit refused for R^2 < 0.5, or whose times "
                         "the recovery does not determine, fails); >= 3 fits");
-  const ThesisCampaign& c = res.campaign("ch4_2d_tumble");
+  const DissertationCampaign& c = res.campaign("ch4_2d_tumble");
   if (!have_campaign(r, c)) return r;
   std::size_t n = 0;
   double lowest = 1.0;
   std::vector<std::string> failures, gaps;
-  for (const ThesisMember* m : c.in_case("")) {
+  for (const DissertationMember* m : c.in_case("")) {
     const auto it = m->fits.find("double_exponential");
     if (it == m->fits.end()) continue;
     if (const std::string missed = missed_stop(res, *m); !missed.empty()) {
@@ -168,14 +168,14 @@ ClaimResult claim_4_1_2_r2(const ThesisResults& res) {
 
 // Sec. 4.1.2: Fig. 38's capsule (Ca 0.4, E_b 0.05, V 5, eta 0, stopped at theta = -pi/3):
 // "the capsule's first recover time, tau_R1 = 0.283".
-ClaimResult claim_4_1_2_fig38(const ThesisResults& res) {
+ClaimResult claim_4_1_2_fig38(const DissertationResults& res) {
   ClaimResult r = claim("4.1.2", "k tau_R1 = 0.283 for Fig. 38's capsule (Ca 0.4, E_b 0.05, V 5, eta 0)",
                         "ch4_2d_tumble, base member (not case theta_pi_6)",
                         "|k tau_R1 of (90) - 0.283| at most 20 % of 0.283 (the text gives no interval)");
-  const ThesisCampaign& c = res.campaign("ch4_2d_tumble");
+  const DissertationCampaign& c = res.campaign("ch4_2d_tumble");
   if (!have_campaign(r, c)) return r;
-  const ThesisMember* base = nullptr;
-  for (const ThesisMember* m : c.in_case(""))
+  const DissertationMember* base = nullptr;
+  for (const DissertationMember* m : c.in_case(""))
     if (m->case_name != "theta_pi_6" && std::abs(parameter(*m, "Ca") - 0.4) < 1e-9 &&
         std::abs(parameter(*m, "E_b") - 0.05) < 1e-9 && std::abs(parameter(*m, "V") - 5) < 1e-9 &&
         parameter(*m, "eta") == 0.0)
@@ -232,7 +232,7 @@ struct Recovery3d {
   }
 };
 
-Recovery3d recovery_3d(const ThesisResults& res, const ThesisMember& m) {
+Recovery3d recovery_3d(const DissertationResults& res, const DissertationMember& m) {
   Recovery3d out;
   out.slug = m.slug;
   out.E_b = parameter(m, "E_b");
@@ -272,10 +272,10 @@ Recovery3d recovery_3d(const ThesisResults& res, const ThesisMember& m) {
   return out;
 }
 
-std::vector<Recovery3d> recoveries(const ThesisResults& res, const ThesisCampaign& c, const std::string& prefix,
+std::vector<Recovery3d> recoveries(const DissertationResults& res, const DissertationCampaign& c, const std::string& prefix,
                                    std::string& why) {
   std::vector<Recovery3d> out;
-  for (const ThesisMember* m : c.in_case("")) {
+  for (const DissertationMember* m : c.in_case("")) {
     if (m->case_name.rfind(prefix, 0) != 0) continue;
     Recovery3d rec = recovery_3d(res, *m);
     if (rec.ok) out.push_back(rec);
@@ -292,9 +292,9 @@ const char* k_memory_rule =
 // (nullopt: the rule cannot judge that member); the verdict lists each member's figures, or says
 // which members are missing.
 template <class Holds>
-void judge_every(ClaimResult& r, const ThesisResults& res, const std::string& prefix, const std::string& none,
+void judge_every(ClaimResult& r, const DissertationResults& res, const std::string& prefix, const std::string& none,
                  Holds holds) {
-  const ThesisCampaign& c = res.campaign("ch4_3d_cases");
+  const DissertationCampaign& c = res.campaign("ch4_3d_cases");
   if (!have_campaign(r, c)) return;
   std::string why;
   const auto rec = recoveries(res, c, prefix, why);
@@ -319,7 +319,7 @@ void judge_every(ClaimResult& r, const ThesisResults& res, const std::string& pr
 
 // Sec. 4.2.2: case A: "a clear, if incomplete, recovery of the initial biconcave shape has
 // occurred ... consistent with the capsule displaying shape memory".
-ClaimResult claim_4_2_A(const ThesisResults& res) {
+ClaimResult claim_4_2_A(const DissertationResults& res) {
   ClaimResult r = claim("4.2", "case A (biconcave reference, constant c0) recovers biconcavity partly, with shape memory",
                         "ch4_3d_cases, cases A_c0_-2.09, A_c0_-1, A_c0_0",
                         std::string("every A member: recovered share (D_stop - D_end)/(D_stop - 0.51) >= 0.3 with D_end "
@@ -334,7 +334,7 @@ ClaimResult claim_4_2_A(const ThesisResults& res) {
 
 // Sec. 4.2.3: case B (c0 = 2 kappa): "D_xy declines monotonically, well past the value 0.51 ...
 // the initial shape is not a stable equilibrium ... the capsule displays no indication of shape memory".
-ClaimResult claim_4_2_B(const ThesisResults& res) {
+ClaimResult claim_4_2_B(const DissertationResults& res) {
   ClaimResult r = claim("4.2", "case B (c0 = 2 kappa) does not recover its shape (passes the undeformed D_xy) and has no shape memory",
                         "ch4_3d_cases, case B",
                         std::string("every B member: D_end < 0.50 (more than 0.01 past the undeformed 0.51) or recovered "
@@ -350,13 +350,13 @@ ClaimResult claim_4_2_B(const ThesisResults& res) {
 
 // Sec. 4.2.4: case C (spherical reference): "gets closer to recovering its initial shape than
 // any capsule in Case A ... beta values ... remained basically constant".
-ClaimResult claim_4_2_C(const ThesisResults& res) {
+ClaimResult claim_4_2_C(const DissertationResults& res) {
   ClaimResult r = claim("4.2", "case C (spherical reference) recovers more completely than A, without shape memory",
                         "ch4_3d_cases, cases C and A_c0_-2.09",
                         std::string("every C member: recovered share above that of the A_c0_-2.09 member with the same "
                                     "E_b, and no shape memory (") + k_memory_rule +
                             "); a pair where either D_stop is within 0.03 of 0.51 has no shares to compare");
-  const ThesisCampaign& c = res.campaign("ch4_3d_cases");
+  const DissertationCampaign& c = res.campaign("ch4_3d_cases");
   if (!have_campaign(r, c)) return r;
   std::string why;
   const auto rc = recoveries(res, c, "C", why);

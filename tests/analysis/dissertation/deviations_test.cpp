@@ -1,4 +1,4 @@
-// The known causes of disagreement are a Markdown file (analysis/thesis/deviations.md, embedded
+// The known causes of disagreement are a Markdown file (analysis/dissertation/deviations.md, embedded
 // at build time): every "## " cause has its text and its Moves: line, and a malformed file is
 // refused with its line.
 #include <catch2/catch.hpp>
@@ -6,12 +6,12 @@
 #include <fstream>
 #include <sstream>
 
-#include "analysis/thesis/deviations.hpp"
+#include "analysis/dissertation/deviations.hpp"
 
 using namespace capsule::analysis;
 
-TEST_CASE("every cause in deviations.md has a topic, a text and what it moves", "[analysis][thesis]") {
-  std::ifstream in(std::string(CAPSULE_SOURCE_DIR) + "/analysis/thesis/deviations.md");
+TEST_CASE("every cause in deviations.md has a topic, a text and what it moves", "[analysis][dissertation]") {
+  std::ifstream in(std::string(CAPSULE_SOURCE_DIR) + "/analysis/dissertation/deviations.md");
   std::stringstream file;
   file << in.rdbuf();
   std::size_t headings = 0;
@@ -28,7 +28,7 @@ TEST_CASE("every cause in deviations.md has a topic, a text and what it moves", 
   CHECK(known_deviations_markdown().find("- **" + d.front().topic + ".** ") == 0);
 }
 
-TEST_CASE("a deviations text without its Moves: line, or with text after it, is refused by line", "[analysis][thesis]") {
+TEST_CASE("a deviations text without its Moves: line, or with text after it, is refused by line", "[analysis][dissertation]") {
   const auto parsed = parse_known_deviations("# title\n\nintro\n\n## A\n\nwhy A\nsecond line\n\nMoves: x\n\n## B\n\nwhy B\n\nMoves: y\n");
   REQUIRE(parsed.size() == 2);
   CHECK(parsed[0].text == "why A second line");

@@ -1,4 +1,4 @@
-#include "analysis/thesis/results.hpp"
+#include "analysis/dissertation/results.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -16,27 +16,27 @@ namespace capsule::analysis {
 
 namespace fs = std::filesystem;
 
-std::vector<const ThesisMember*> ThesisCampaign::in_case_all_levels(const std::string& case_name) const {
-  std::vector<const ThesisMember*> out;
+std::vector<const DissertationMember*> DissertationCampaign::in_case_all_levels(const std::string& case_name) const {
+  std::vector<const DissertationMember*> out;
   std::set<std::string> seen;
   for (const auto& m : members)
     if ((case_name.empty() || m.case_name == case_name) && seen.insert(m.slug).second) out.push_back(&m);
   return out;
 }
 
-std::vector<const ThesisMember*> ThesisCampaign::in_case(const std::string& case_name) const {
-  std::vector<const ThesisMember*> out;
-  for (const ThesisMember* m : in_case_all_levels(case_name))
+std::vector<const DissertationMember*> DissertationCampaign::in_case(const std::string& case_name) const {
+  std::vector<const DissertationMember*> out;
+  for (const DissertationMember* m : in_case_all_levels(case_name))
     if (!m->coarse) out.push_back(m);
   return out;
 }
 
-std::string ThesisCampaign::judged_levels() const {
+std::string DissertationCampaign::judged_levels() const {
   std::string out;
   const auto judged = in_case("");
   for (const auto& [key, spacing] : ladder_keys) {
     std::map<double, int> count;  // level -> judged members there
-    for (const ThesisMember* m : judged)
+    for (const DissertationMember* m : judged)
       if (const auto it = m->parameters.find(key); it != m->parameters.end()) ++count[it->second];
     std::string levels;
     // finest first
@@ -52,11 +52,11 @@ std::string ThesisCampaign::judged_levels() const {
   return out;
 }
 
-void mark_coarse_members(ThesisCampaign& c) {
+void mark_coarse_members(DissertationCampaign& c) {
   for (auto& m : c.members) m.coarse = false, m.finer.clear();
   for (const auto& [key, spacing] : c.ladder_keys) {
     // A physical point: the case and every recorded parameter but the ladder keys.
-    const auto point = [&](const ThesisMember& m) {
+    const auto point = [&](const DissertationMember& m) {
       std::ostringstream s;
       s.precision(17);
       s << m.case_name;
@@ -64,11 +64,11 @@ void mark_coarse_members(ThesisCampaign& c) {
         if (!c.ladder_keys.count(k)) s << '|' << k << '=' << v;
       return s.str();
     };
-    std::map<std::string, const ThesisMember*> finest;  // point -> its finest member
+    std::map<std::string, const DissertationMember*> finest;  // point -> its finest member
     for (const auto& m : c.members) {
       const auto it = m.parameters.find(key);
       if (it == m.parameters.end() || std::isnan(ladder_spacing(spacing, it->second))) continue;
-      const ThesisMember*& f = finest[point(m)];
+      const DissertationMember*& f = finest[point(m)];
       if (!f || ladder_spacing(spacing, it->second) < ladder_spacing(spacing, f->parameters.at(key))) f = &m;
     }
     for (auto& m : c.members) {
@@ -96,11 +96,11 @@ std::string resolve_member_file(const std::string& campaign_root, const std::str
   return fs::exists(moved) ? moved.string() : "";
 }
 
-ThesisResults::ThesisResults(std::string results_dir) : dir_(std::move(results_dir)) {}
+DissertationResults::DissertationResults(std::string results_dir) : dir_(std::move(results_dir)) {}
 
-const ThesisCampaign& ThesisResults::campaign(const std::string& name) const {
+const DissertationCampaign& DissertationResults::campaign(const std::string& name) const {
   if (const auto it = campaigns_.find(name); it != campaigns_.end()) return it->second;
-  ThesisCampaign c;
+  DissertationCampaign c;
   c.name = name;
   const fs::path root = fs::path(dir_) / name;
   const fs::path path = root / "report" / "fits.json";
@@ -125,7 +125,7 @@ const ThesisCampaign& ThesisResults::campaign(const std::string& name) const {
     }
   }
   for (const auto& j : c.fits.value("members", nlohmann::json::array())) {
-    ThesisMember m;
+    DissertationMember m;
     m.id = j.value("id", "");
     m.slug = j.value("slug", "");
     m.case_name = j.value("case", "");
@@ -144,7 +144,7 @@ const ThesisCampaign& ThesisResults::campaign(const std::string& name) const {
   return campaigns_.emplace(name, std::move(c)).first->second;
 }
 
-std::optional<io::MemberData> ThesisResults::member_data(const ThesisMember& m, std::string& why,
+std::optional<io::MemberData> DissertationResults::member_data(const DissertationMember& m, std::string& why,
                                                          bool accept_unstable) const {
   if (m.file.empty()) {
     why = "member file of " + m.slug + " missing (" + (m.recorded_path.empty() ? "no path recorded" : m.recorded_path) + ")";

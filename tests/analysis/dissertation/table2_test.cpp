@@ -3,16 +3,16 @@
 #include <catch2/catch.hpp>
 
 #include "analysis/fit/fit_statistics.hpp"
-#include "analysis/thesis/report.hpp"
-#include "analysis/thesis/table2.hpp"
+#include "analysis/dissertation/report.hpp"
+#include "analysis/dissertation/table2.hpp"
 #include "tests/analysis/synthetic_campaign.hpp"
-#include "tests/analysis/thesis_fixtures.hpp"
+#include "tests/analysis/dissertation_fixtures.hpp"
 
 using namespace capsule::analysis;
 using namespace capsule::analysis::testing;
 
-TEST_CASE("Thesis Table 2: known coefficients give the right differences and overlaps", "[analysis][thesis]") {
-  TempDir tmp("thesis_table2");
+TEST_CASE("Dissertation Table 2: known coefficients give the right differences and overlaps", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_table2");
   // Ca = 0.05, E_b = 0 (Table 2: a_s 0.0208 ± 0.0039, b_s 0.0590 ± 0.0149, c_s 0.4158 ± 0.0638).
   const FitResult s = known_fit("bilinear (95)-(96)", {{"a", {0.0408, 0.002}}, {"b", {0.0590, 0.01}}, {"c", {0.4158 + 0.1, 0.05}}}, 0.93, 15);
   // k tau_r (Table 2: a_r 0.0534 ± 0.0028, b_r 0.2711 ± 0.0109, c_r 0.3986 ± 0.0466).
@@ -24,7 +24,7 @@ TEST_CASE("Thesis Table 2: known coefficients give the right differences and ove
              nlohmann::json::array({bilinear_json("response.k_tau_s", 0.05, 0.025,
                                                   FitResult::failure("bilinear (95)-(96)", "too few members (3 < 5)"))}));
 
-  const ThesisResults results(tmp.path.string());
+  const DissertationResults results(tmp.path.string());
   const auto rows = compare_table2_rows(results);
   REQUIRE(rows.size() == 6);
 
@@ -56,13 +56,13 @@ TEST_CASE("Thesis Table 2: known coefficients give the right differences and ove
   CHECK_FALSE(rows[4].found);
   CHECK(rows[4].why.find("campaign ch5_bilinear_ca02 not run") != std::string::npos);
 
-  const std::string md = thesis_markdown(results, tmp.path.string());
+  const std::string md = dissertation_markdown(results, tmp.path.string());
   CHECK(md.find("cannot tell (campaign ch5_bilinear_ca02 not run") != std::string::npos);
   CHECK(md.find("| k_tau_s (Ca 0.05, E_b 0) | ch5_bilinear_ca005 | a | 0.0208 ± 0.0039 | 0.0408 ± 0.002 | 0.02 | NO | ~ 0.91 | 0.93 | 15 |") !=
         std::string::npos);
 }
 
-TEST_CASE("Thesis ratios b/a: delta method from half-widths and from the covariance", "[analysis][thesis]") {
+TEST_CASE("Dissertation ratios b/a: delta method from half-widths and from the covariance", "[analysis][dissertation]") {
   const RatioInterval h = ratio_from_half_widths(2.0, 0.2, 4.0, 0.4);
   REQUIRE(h.ok);
   CHECK(h.value == Approx(2.0));
@@ -88,15 +88,15 @@ TEST_CASE("Thesis ratios b/a: delta method from half-widths and from the covaria
   CHECK(d.method.find("half-widths") != std::string::npos);
 }
 
-TEST_CASE("Thesis Table 2: while a ladder's finest level is too small to fit, the finest fitted level stands in", "[analysis][thesis]") {
-  TempDir tmp("thesis_table2_level");
+TEST_CASE("Dissertation Table 2: while a ladder's finest level is too small to fit, the finest fitted level stands in", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_table2_level");
   const FitResult coarse = known_fit("bilinear (95)-(96)", {{"a", {0.05, 0.01}}, {"b", {0.07, 0.03}}, {"c", {0.8, 0.1}}}, 0.88, 15);
   nlohmann::json fine = bilinear_json("response.k_tau_s", 0.2, 0.0, FitResult::failure("bilinear (95)-(96)", "too few members (2 < 5)"));
   fine["level"] = {{"key", "resolution.a"}, {"value", 7.0}};
   nlohmann::json five = bilinear_json("response.k_tau_s", 0.2, 0.0, coarse);
   five["level"] = {{"key", "resolution.a"}, {"value", 5.0}};
   write_fits(tmp.path, "ch5_bilinear_ca02", nlohmann::json::array(), nlohmann::json::array({fine, five}));
-  const ThesisResults results(tmp.path.string());
+  const DissertationResults results(tmp.path.string());
   const auto rows = compare_table2_rows(results);
   REQUIRE(rows.size() == 6);
   const auto& r = rows[4];  // k_tau_s, Ca 0.2, E_b 0
@@ -108,7 +108,7 @@ TEST_CASE("Thesis Table 2: while a ladder's finest level is too small to fit, th
   CHECK(r.entry.ladder_note.at("a") == "the finest level, resolution.a = 7, not fitted yet (too few members (2 < 5))");
   // With no level fitted at all, the finest one is shown with its reason.
   write_fits(tmp.path, "ch5_bilinear_ca02", nlohmann::json::array(), nlohmann::json::array({fine}));
-  const ThesisResults none(tmp.path.string());
+  const DissertationResults none(tmp.path.string());
   const auto rows2 = compare_table2_rows(none);
   REQUIRE(rows2[4].found);
   CHECK(rows2[4].entry.level == 7.0);

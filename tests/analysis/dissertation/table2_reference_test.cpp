@@ -4,7 +4,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "analysis/thesis/table2_reference.hpp"
+#include "analysis/dissertation/table2_reference.hpp"
 
 using namespace capsule::analysis;
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "analysis/report/table.hpp"
-#include "analysis/thesis/results.hpp"
+#include "analysis/dissertation/results.hpp"
 
 namespace capsule::analysis {
 
@@ -15,6 +15,6 @@ const std::vector<std::string>& validation_campaigns();
 
 // One row per published-curve entry of each validation campaign's fits.json; a campaign not
 // run, or run without a published block, gives one row that says so.
-Table validation_table(const ThesisResults& results);
+Table validation_table(const DissertationResults& results);
 
 }  // namespace capsule::analysis

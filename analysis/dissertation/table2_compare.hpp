@@ -12,7 +12,7 @@
 
 #include "analysis/compare/bilinear_entries.hpp"
 #include "analysis/fit/fit_result.hpp"
-#include "analysis/thesis/table2_reference.hpp"
+#include "analysis/dissertation/table2_reference.hpp"
 
 namespace capsule::analysis {
 

@@ -6,11 +6,11 @@
 #include <cmath>
 #include <limits>
 
-#include "analysis/thesis/claims.hpp"
-#include "analysis/thesis/report.hpp"
+#include "analysis/dissertation/claims.hpp"
+#include "analysis/dissertation/report.hpp"
 #include "solver/io/member_file.hpp"
 #include "tests/analysis/synthetic_campaign.hpp"
-#include "tests/analysis/thesis_fixtures.hpp"
+#include "tests/analysis/dissertation_fixtures.hpp"
 
 using namespace capsule::analysis;
 using namespace capsule::analysis::testing;
@@ -131,9 +131,9 @@ void write_tumble_member(const std::filesystem::path& file, double t_stop, bool 
 
 }  // namespace
 
-TEST_CASE("Thesis claims: every claim cannot tell when no campaign has been run", "[analysis][thesis]") {
-  TempDir tmp("thesis_claims_none");
-  const auto claims = evaluate_claims(ThesisResults(tmp.path.string()));
+TEST_CASE("Dissertation claims: every claim cannot tell when no campaign has been run", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_none");
+  const auto claims = evaluate_claims(DissertationResults(tmp.path.string()));
   REQUIRE(claims.size() >= 20);
   for (const auto& c : claims) {
     INFO(c.section << " " << c.statement << ": " << c.measured);
@@ -144,13 +144,13 @@ TEST_CASE("Thesis claims: every claim cannot tell when no campaign has been run"
   }
 }
 
-TEST_CASE("Thesis claims: k tau_r proportional to Ca agrees, differs, or cannot tell with too few members", "[analysis][thesis]") {
-  TempDir tmp("thesis_claims_ca");
+TEST_CASE("Dissertation claims: k tau_r proportional to Ca agrees, differs, or cannot tell with too few members", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_ca");
   const std::vector<double> ca{0.0125, 0.025, 0.05, 0.1, 0.2, 0.4};
 
   SECTION("data that satisfy the rule agree") {
     write_ch3_ca(tmp.path, ca, proportional);
-    const auto claims = evaluate_claims(ThesisResults(tmp.path.string()));
+    const auto claims = evaluate_claims(DissertationResults(tmp.path.string()));
     const auto& p = find_claim(claims, "3.2", "proportional to Ca (2d)");
     CHECK(p.verdict == Verdict::agrees);
     CHECK(p.measured.find("p = 1 ") != std::string::npos);
@@ -162,7 +162,7 @@ TEST_CASE("Thesis claims: k tau_r proportional to Ca agrees, differs, or cannot 
   }
   SECTION("data that contradict it differ") {
     write_ch3_ca(tmp.path, ca, constant);
-    const auto claims = evaluate_claims(ThesisResults(tmp.path.string()));
+    const auto claims = evaluate_claims(DissertationResults(tmp.path.string()));
     const auto& p = find_claim(claims, "3.2", "proportional to Ca (2d)");
     CHECK(p.verdict == Verdict::differs);
     CHECK(p.measured.find("p = 0 ") != std::string::npos);
@@ -171,7 +171,7 @@ TEST_CASE("Thesis claims: k tau_r proportional to Ca agrees, differs, or cannot 
   }
   SECTION("too few members cannot tell") {
     write_ch3_ca(tmp.path, {0.1, 0.2, 0.4}, proportional);
-    const auto claims = evaluate_claims(ThesisResults(tmp.path.string()));
+    const auto claims = evaluate_claims(DissertationResults(tmp.path.string()));
     const auto& p = find_claim(claims, "3.2", "proportional to Ca (2d)");
     CHECK(p.verdict == Verdict::cannot_tell);
     CHECK(p.measured.find("members missing") != std::string::npos);
@@ -179,8 +179,8 @@ TEST_CASE("Thesis claims: k tau_r proportional to Ca agrees, differs, or cannot 
   }
 }
 
-TEST_CASE("Thesis claims: a campaign with a resolution ladder is judged at each point's finest shipped level", "[analysis][thesis]") {
-  TempDir tmp("thesis_claims_ladder");
+TEST_CASE("Dissertation claims: a campaign with a resolution ladder is judged at each point's finest shipped level", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_ladder");
   const std::vector<double> ca{0.0125, 0.025, 0.05, 0.1, 0.2, 0.4};
   // a = 5 contradicts the rule (k tau_r constant), a = 7 satisfies it (proportional).
   const auto write = [&](bool all_fine) {
@@ -200,7 +200,7 @@ TEST_CASE("Thesis claims: a campaign with a resolution ladder is judged at each 
   };
   SECTION("every point at a = 7: the a = 5 members are not judged") {
     write(true);
-    const ThesisResults results(tmp.path.string());
+    const DissertationResults results(tmp.path.string());
     const auto& c = results.campaign("ch3_ca");
     CHECK(c.in_case_all_levels("2d").size() == 12);
     REQUIRE(c.in_case("2d").size() == 6);
@@ -209,28 +209,28 @@ TEST_CASE("Thesis claims: a campaign with a resolution ladder is judged at each 
     const auto claims = evaluate_claims(results);
     CHECK(find_claim(claims, "3.2", "proportional to Ca (2d)").verdict == Verdict::agrees);
     // Without the ladder's levels told apart, the a = 5 members would make it differ.
-    CHECK(thesis_markdown(results, "results").find("resolution.a: 7 (6 members)") != std::string::npos);
+    CHECK(dissertation_markdown(results, "results").find("resolution.a: 7 (6 members)") != std::string::npos);
   }
   SECTION("a point shipped only at a = 5 is judged there") {
     write(false);
-    const ThesisResults results(tmp.path.string());
+    const DissertationResults results(tmp.path.string());
     const auto& c = results.campaign("ch3_ca");
     CHECK(c.judged_levels() == "resolution.a: 7 (5 members), 5 (1 member)");
     const auto judged = c.in_case("2d");
     REQUIRE(judged.size() == 6);
-    const auto coarse = std::count_if(c.members.begin(), c.members.end(), [](const ThesisMember& m) { return m.coarse; });
+    const auto coarse = std::count_if(c.members.begin(), c.members.end(), [](const DissertationMember& m) { return m.coarse; });
     CHECK(coarse == 5);
     for (const auto& m : c.members)
       if (m.coarse) CHECK(m.finer == "Ca_" + std::to_string(m.parameters.at("Ca")) + "-a7");
   }
 }
 
-TEST_CASE("Thesis claims: the R^2 rule of Sec. 3.1 differs on one poor fit and needs all four campaigns to agree", "[analysis][thesis]") {
-  TempDir tmp("thesis_claims_r2");
+TEST_CASE("Dissertation claims: the R^2 rule of Sec. 3.1 differs on one poor fit and needs all four campaigns to agree", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_r2");
   const std::vector<double> ca{0.0125, 0.025, 0.05, 0.1, 0.2, 0.4};
   SECTION("good fits, three campaigns missing") {
     write_ch3_ca(tmp.path, ca, proportional);
-    const auto claims = evaluate_claims(ThesisResults(tmp.path.string()));
+    const auto claims = evaluate_claims(DissertationResults(tmp.path.string()));
     const auto& c = find_claim(claims, "3.1", "R^2");
     INFO(c.measured);
     CHECK(c.verdict == Verdict::cannot_tell);
@@ -238,7 +238,7 @@ TEST_CASE("Thesis claims: the R^2 rule of Sec. 3.1 differs on one poor fit and n
   }
   SECTION("a recovery fit with R^2 0.95 at E_b = 0.05") {
     write_ch3_ca(tmp.path, ca, proportional, 0.95);
-    const auto claims = evaluate_claims(ThesisResults(tmp.path.string()));
+    const auto claims = evaluate_claims(DissertationResults(tmp.path.string()));
     const auto& c = find_claim(claims, "3.1", "R^2");
     INFO(c.measured);
     CHECK(c.verdict == Verdict::differs);
@@ -246,13 +246,13 @@ TEST_CASE("Thesis claims: the R^2 rule of Sec. 3.1 differs on one poor fit and n
   }
 }
 
-TEST_CASE("Thesis claims: no recovery of biconcavity at E_b = 0, judged from the member file", "[analysis][thesis]") {
-  TempDir tmp("thesis_claims_nb");
+TEST_CASE("Dissertation claims: no recovery of biconcavity at E_b = 0, judged from the member file", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_nb");
   const std::string rel = "members/no_bending-x/member.h5";  // relative to results/<campaign>/, as shipped
   SECTION("stays at D_min: agrees") {
     write_no_bending_member(tmp.path / "ch4_2d_tt" / rel, false);
     write_ch4_2d_tt(tmp.path, rel);
-    const auto claims = evaluate_claims(ThesisResults(tmp.path.string()));
+    const auto claims = evaluate_claims(DissertationResults(tmp.path.string()));
     const auto& c = find_claim(claims, "4.1.1", "E_b = 0");
     INFO(c.measured);
     CHECK(c.verdict == Verdict::agrees);
@@ -261,7 +261,7 @@ TEST_CASE("Thesis claims: no recovery of biconcavity at E_b = 0, judged from the
   SECTION("climbs back toward 0.812: differs") {
     write_no_bending_member(tmp.path / "ch4_2d_tt" / rel, true);
     write_ch4_2d_tt(tmp.path, rel);
-    const auto claims = evaluate_claims(ThesisResults(tmp.path.string()));
+    const auto claims = evaluate_claims(DissertationResults(tmp.path.string()));
     const auto& c = find_claim(claims, "4.1.1", "E_b = 0");
     INFO(c.measured);
     CHECK(c.verdict == Verdict::differs);
@@ -269,11 +269,11 @@ TEST_CASE("Thesis claims: no recovery of biconcavity at E_b = 0, judged from the
   SECTION("an absolute path from another machine is found under the campaign's members folder") {
     write_no_bending_member(tmp.path / "ch4_2d_tt" / rel, false);
     write_ch4_2d_tt(tmp.path, "/elsewhere/results/ch4_2d_tt/" + rel);
-    CHECK(find_claim(evaluate_claims(ThesisResults(tmp.path.string())), "4.1.1", "E_b = 0").verdict == Verdict::agrees);
+    CHECK(find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "4.1.1", "E_b = 0").verdict == Verdict::agrees);
   }
   SECTION("member file missing: cannot tell") {
     write_ch4_2d_tt(tmp.path, rel);
-    const auto claims = evaluate_claims(ThesisResults(tmp.path.string()));
+    const auto claims = evaluate_claims(DissertationResults(tmp.path.string()));
     const auto& c = find_claim(claims, "4.1.1", "E_b = 0");
     INFO(c.measured);
     CHECK(c.verdict == Verdict::cannot_tell);
@@ -281,10 +281,10 @@ TEST_CASE("Thesis claims: no recovery of biconcavity at E_b = 0, judged from the
   }
 }
 
-TEST_CASE("Thesis: THESIS.md from an empty results folder says cannot tell and lists the known deviations", "[analysis][thesis]") {
-  TempDir tmp("thesis_md");
+TEST_CASE("Thesis: THESIS.md from an empty results folder says cannot tell and lists the known deviations", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_md");
   const auto out = tmp.path / "sub" / "THESIS.md";
-  const ThesisSummary s = write_thesis((tmp.path / "results").string(), out.string());
+  const DissertationSummary s = write_dissertation((tmp.path / "results").string(), out.string());
   const std::string md = slurp(out);
   CHECK(s.agrees == 0);
   CHECK(s.differs == 0);
@@ -299,8 +299,8 @@ TEST_CASE("Thesis: THESIS.md from an empty results folder says cannot tell and l
   CHECK(md.find("| ch5_bilinear_ca02 | not run |") != std::string::npos);
 }
 
-TEST_CASE("Thesis claims: 5.2.1 pairs each power law with the Kelvin-Voigt member of equal physical viscosity", "[analysis][thesis]") {
-  TempDir tmp("thesis_claims_pl");
+TEST_CASE("Dissertation claims: 5.2.1 pairs each power law with the Kelvin-Voigt member of equal physical viscosity", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_pl");
   const auto dir = tmp.path / "ch5_powerlaw";
   // K = 10 power law; its literal partner (eta = 10, dissertation reading: physically 10/3)
   // deforms 40 % more; the physical partner (eta = 10) 5 % more.
@@ -311,7 +311,7 @@ TEST_CASE("Thesis claims: 5.2.1 pairs each power law with the Kelvin-Voigt membe
        member_json("kv10", "kv", {{"eta", 10.0}}, {}, "members/kv10/member.h5")});
   SECTION("only the literal pairing: cannot tell, with its numbers") {
     write_fits(tmp.path, "ch5_powerlaw", members);
-    const auto claims = evaluate_claims(ThesisResults(tmp.path.string()));
+    const auto claims = evaluate_claims(DissertationResults(tmp.path.string()));
     const auto& c = find_claim(claims, "5.2.1", "initial deformation");
     INFO(c.measured);
     CHECK(c.verdict == Verdict::cannot_tell);
@@ -323,7 +323,7 @@ TEST_CASE("Thesis claims: 5.2.1 pairs each power law with the Kelvin-Voigt membe
       auto m = members;
       m.push_back(member_json("kvp10", "kv_physical", {{"eta", 10.0}}, {}, "members/kvp10/member.h5"));
       write_fits(tmp.path, "ch5_powerlaw", m);
-      const auto claims = evaluate_claims(ThesisResults(tmp.path.string()));
+      const auto claims = evaluate_claims(DissertationResults(tmp.path.string()));
       const auto& c = find_claim(claims, "5.2.1", "initial deformation");
       INFO(c.measured);
       CHECK(c.verdict == (D_kv < 0.4 ? Verdict::agrees : Verdict::differs));
@@ -347,7 +347,7 @@ TEST_CASE("Thesis claims: 5.2.1 pairs each power law with the Kelvin-Voigt membe
            member_json("kvp10a5", "kv_physical", {{"eta", 10.0}, {"resolution.a", 5.0}}, {}, "members/kvp10a5/member.h5")});
       const nlohmann::json analysis{{"fits", {"response"}}, {"ladder", {{{"key", "resolution.a"}, {"quantities", {"response.k_tau_s"}}}}}};
       write_fits(tmp.path, "ch5_powerlaw", m, nlohmann::json::array(), analysis);
-      const auto claims = evaluate_claims(ThesisResults(tmp.path.string()));
+      const auto claims = evaluate_claims(DissertationResults(tmp.path.string()));
       const auto& c = find_claim(claims, "5.2.1", "initial deformation");
       INFO(c.measured);
       if (D_coarse < 0.25) {
@@ -363,13 +363,13 @@ TEST_CASE("Thesis claims: 5.2.1 pairs each power law with the Kelvin-Voigt membe
   }
 }
 
-TEST_CASE("Thesis claims: case A's partial recovery is judged from D_stop, and not at all when D_stop is near 0.51", "[analysis][thesis]") {
-  TempDir tmp("thesis_claims_t1");
+TEST_CASE("Dissertation claims: case A's partial recovery is judged from D_stop, and not at all when D_stop is near 0.51", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_t1");
   const auto judge = [&](double D_stop, double D_end, double phase_end) {
     write_table1_member(tmp.path / "ch4_3d_cases/members/A/member.h5", D_stop, D_end, phase_end);
     write_fits(tmp.path, "ch4_3d_cases",
                nlohmann::json::array({member_json("A", "A_c0_-2.09", {{"E_b", 0.025}}, {}, "members/A/member.h5")}));
-    return find_claim(evaluate_claims(ThesisResults(tmp.path.string())), "4.2", "case A");
+    return find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "4.2", "case A");
   };
   // 0.57 -> 0.53: share 0.67, D_end above 0.52, phase distance 0.8 -> 0.2 (memory): agrees
   CHECK(judge(0.57, 0.53, 0.2).verdict == Verdict::agrees);
@@ -384,8 +384,8 @@ TEST_CASE("Thesis claims: case A's partial recovery is judged from D_stop, and n
   CHECK(c.measured.find("not defined") != std::string::npos);
 }
 
-TEST_CASE("Thesis claims: Fig. 12's G independence agrees within 2 %, differs beyond, cannot tell with two", "[analysis][thesis]") {
-  TempDir tmp("thesis_claims_G");
+TEST_CASE("Dissertation claims: Fig. 12's G independence agrees within 2 %, differs beyond, cannot tell with two", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_G");
   const auto dir = tmp.path / "ch2_3d_visco";
   const auto write_G_member = [&](const std::string& slug, double G, double D_steady) {
     const auto file = dir / "members" / slug / "member.h5";
@@ -404,12 +404,12 @@ TEST_CASE("Thesis claims: Fig. 12's G independence agrees within 2 %, differs be
   };
   nlohmann::json members = nlohmann::json::array({write_G_member("G10", 10, 0.372), write_G_member("G25", 25, 0.374)});
   write_fits(tmp.path, "ch2_3d_visco", members);
-  CHECK(find_claim(evaluate_claims(ThesisResults(tmp.path.string())), "2", "Fig. 12").verdict == Verdict::cannot_tell);
+  CHECK(find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "2", "Fig. 12").verdict == Verdict::cannot_tell);
   for (const double D50 : {0.374, 0.30}) {
     auto m = members;
     m.push_back(write_G_member("G50", 50, D50));
     write_fits(tmp.path, "ch2_3d_visco", m);
-    const auto claims = evaluate_claims(ThesisResults(tmp.path.string()));
+    const auto claims = evaluate_claims(DissertationResults(tmp.path.string()));
     const auto& c = find_claim(claims, "2", "Fig. 12");
     INFO(c.measured);
     CHECK(c.verdict == (D50 > 0.35 ? Verdict::agrees : Verdict::differs));
@@ -417,8 +417,8 @@ TEST_CASE("Thesis claims: Fig. 12's G independence agrees within 2 %, differs be
   }
 }
 
-TEST_CASE("Thesis claims: a tumbling member whose theta stop never came is not counted (Sec. 4.1.2)", "[analysis][thesis]") {
-  TempDir tmp("thesis_claims_stop");
+TEST_CASE("Dissertation claims: a tumbling member whose theta stop never came is not counted (Sec. 4.1.2)", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_stop");
   const auto dir = tmp.path / "ch4_2d_tumble";
   // Three members with (90) fits of the text's orders (k tau_R1 0.2, k tau_R2 2); the third
   // stops at `third_stop`.
@@ -436,7 +436,7 @@ TEST_CASE("Thesis claims: a tumbling member whose theta stop never came is not c
                                     rel));
     }
     write_fits(tmp.path, "ch4_2d_tumble", members);
-    return evaluate_claims(ThesisResults(tmp.path.string()));
+    return evaluate_claims(DissertationResults(tmp.path.string()));
   };
   SECTION("every stop came: the orders agree") {
     const auto claims = judge(18.0);

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "analysis/report/table.hpp"
-#include "analysis/thesis/table2_compare.hpp"
-#include "analysis/thesis/results.hpp"
+#include "analysis/dissertation/table2_compare.hpp"
+#include "analysis/dissertation/results.hpp"
 
 namespace capsule::analysis {
 
@@ -31,7 +31,7 @@ struct Table2RowComparison {
 };
 
 // One per Table 2 row, in the table's order.
-std::vector<Table2RowComparison> compare_table2_rows(const ThesisResults& results);
+std::vector<Table2RowComparison> compare_table2_rows(const DissertationResults& results);
 
 // b/a with a 95 % half-width.
 struct RatioInterval {

@@ -1,4 +1,4 @@
-#include "analysis/thesis/deviations.hpp"
+#include "analysis/dissertation/deviations.hpp"
 
 #include <sstream>
 #include <stdexcept>
@@ -13,7 +13,7 @@ std::vector<KnownDeviation> parse_known_deviations(const std::string& markdown) 
   std::string line;
   KnownDeviation* d = nullptr;
   int line_number = 0;
-  const auto where = [&] { return "analysis/thesis/deviations.md line " + std::to_string(line_number) + ": "; };
+  const auto where = [&] { return "analysis/dissertation/deviations.md line " + std::to_string(line_number) + ": "; };
   while (std::getline(in, line)) {
     ++line_number;
     if (line.rfind("## ", 0) == 0) {

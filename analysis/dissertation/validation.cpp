@@ -1,4 +1,4 @@
-#include "analysis/thesis/validation.hpp"
+#include "analysis/dissertation/validation.hpp"
 
 #include <cmath>
 
@@ -22,13 +22,13 @@ const std::vector<std::string>& validation_campaigns() {
   return c;
 }
 
-Table validation_table(const ThesisResults& results) {
+Table validation_table(const DissertationResults& results) {
   Table t;
   t.title = "Members against published curves during the shear (report section \"published\")";
   t.header = {"campaign", "curve", "member", "points", "bias D_xy", "max |dD_xy|", "max |dD_extent|",
               "D curve (last point)", "D_xy there", "D_xy / curve - 1", "within digitising error", "note"};
   for (const auto& name : validation_campaigns()) {
-    const ThesisCampaign& c = results.campaign(name);
+    const DissertationCampaign& c = results.campaign(name);
     if (!c.found) {
       t.rows.push_back({name, "", "", "", "", "", "", "", "", "", "cannot tell", c.missing});
       continue;

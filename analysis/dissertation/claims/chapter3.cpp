@@ -1,14 +1,14 @@
 // The claims of the dissertation's Chapter 3 (the circle and the sphere), each a rule with a stated numeric
 // criterion (claims/support.hpp).
-#include "analysis/thesis/claims/chapters.hpp"
-#include "analysis/thesis/claims/support.hpp"
+#include "analysis/dissertation/claims/chapters.hpp"
+#include "analysis/dissertation/claims/support.hpp"
 
 namespace capsule::analysis::claims {
 
 // Sec. 3.1: "In general, exponential fittings ... had R^2 > 0.99. ... For larger E_b, the
 // recovery model was less accurate, with R^2 as low as 0.92. Also, for high V or eta, the
 // response model only had R^2 > 0.97."
-ClaimResult claim_3_1(const ThesisResults& res) {
+ClaimResult claim_3_1(const DissertationResults& res) {
   ClaimResult r = claim("3.1",
                         "R^2 of the single exponential fits (85), (86) > 0.99, except recovery at large E_b (down to "
                         "0.92) and response at large V or eta (> 0.97)",
@@ -21,12 +21,12 @@ ClaimResult claim_3_1(const ThesisResults& res) {
   std::vector<std::string> missing, failures;
   double min_resp = 1.0, min_rec = 1.0;
   for (const char* n : names) {
-    const ThesisCampaign& c = res.campaign(n);
+    const DissertationCampaign& c = res.campaign(n);
     if (!c.found) {
       missing.push_back(c.missing);
       continue;
     }
-    for (const ThesisMember* m : c.in_case("")) {
+    for (const DissertationMember* m : c.in_case("")) {
       const double V = parameter(*m, "V"), eta = parameter(*m, "eta"), Eb = parameter(*m, "E_b");
       for (const char* fit : {"response", "recovery"}) {
         const auto it = m->fits.find(fit);
@@ -63,11 +63,11 @@ ClaimResult claim_3_1(const ThesisResults& res) {
 }
 
 // Sec. 3.2: "recovery time k tau_r is almost directly proportional with Ca".
-ClaimResult claim_3_2_proportional(const ThesisResults& res, const std::string& case_name) {
+ClaimResult claim_3_2_proportional(const DissertationResults& res, const std::string& case_name) {
   ClaimResult r = claim("3.2", "k tau_r almost directly proportional to Ca (" + case_name + ")",
                         "ch3_ca, case " + case_name,
                         "exponent p of k tau_r ~ Ca^p (straight line in log-log) within [0.8, 1.2]; >= 4 values of Ca");
-  const ThesisCampaign& c = res.campaign("ch3_ca");
+  const DissertationCampaign& c = res.campaign("ch3_ca");
   if (!have_campaign(r, c)) return r;
   const Series s = series(c, case_name, "Ca", "recovery.k_tau_r");
   if (!have_points(r, s, 4, "values of Ca with k tau_r")) return r;
@@ -78,12 +78,12 @@ ClaimResult claim_3_2_proportional(const ThesisResults& res, const std::string& 
 }
 
 // Sec. 3.2: "the normalized recovery time tau_r/tau_e is nearly constant for Ca >= 0.1".
-ClaimResult claim_3_2_constant(const ThesisResults& res, const std::string& case_name) {
+ClaimResult claim_3_2_constant(const DissertationResults& res, const std::string& case_name) {
   ClaimResult r = claim("3.2", "tau_r/tau_e nearly constant for Ca >= 0.1 (" + case_name + ")", "ch3_ca, case " + case_name,
                         "(max - min)/mean of tau_r/tau_e = k tau_r/(Ca V) over Ca >= 0.1 at most 0.2; >= 3 values of Ca");
-  const ThesisCampaign& c = res.campaign("ch3_ca");
+  const DissertationCampaign& c = res.campaign("ch3_ca");
   if (!have_campaign(r, c)) return r;
-  Series s = series(c, case_name, "Ca", "recovery.k_tau_r", [](const ThesisMember& m) { return parameter(m, "Ca") >= 0.1 - 1e-12; });
+  Series s = series(c, case_name, "Ca", "recovery.k_tau_r", [](const DissertationMember& m) { return parameter(m, "Ca") >= 0.1 - 1e-12; });
   for (auto& p : s.points) p.y /= p.x * parameter(*p.member, "V");
   if (!have_points(r, s, 3, "values of Ca >= 0.1 with k tau_r")) return r;
   const double spread = relative_spread(s.ys());
@@ -107,12 +107,12 @@ Fall fall_of(const Series& s) {
 
 // Sec. 3.3: "A clear inverse relationship between k tau_r and E_b ... for both"; "the spherical
 // capsules' k tau_s has the same inverse relationship".
-ClaimResult claim_3_3_falls(const ThesisResults& res, const std::string& case_name, const std::string& column) {
+ClaimResult claim_3_3_falls(const DissertationResults& res, const std::string& case_name, const std::string& column) {
   const std::string t = column == "recovery.k_tau_r" ? "k tau_r" : "k tau_s";
   ClaimResult r = claim("3.3", t + " falls with E_b (" + case_name + ")", "ch3_eb, case " + case_name,
                         t + " at the largest E_b at most 0.7 x its value at the smallest E_b, no step up by more than 5 %; "
                             ">= 3 values of E_b");
-  const ThesisCampaign& c = res.campaign("ch3_eb");
+  const DissertationCampaign& c = res.campaign("ch3_eb");
   if (!have_campaign(r, c)) return r;
   const Series s = series(c, case_name, "E_b", column);
   if (!have_points(r, s, 3, "values of E_b with " + t)) return r;
@@ -123,11 +123,11 @@ ClaimResult claim_3_3_falls(const ThesisResults& res, const std::string& case_na
 }
 
 // Sec. 3.3: "k tau_s undergoes only a slight, almost linear decline as E_b rises for circular capsules".
-ClaimResult claim_3_3_slight(const ThesisResults& res) {
+ClaimResult claim_3_3_slight(const DissertationResults& res) {
   ClaimResult r = claim("3.3", "k tau_s falls only slightly with E_b in 2D", "ch3_eb, case 2d",
                         "k tau_s at the largest E_b between 0.70 and 1.02 x its value at the smallest E_b (falls by "
                         "less than 30 %); >= 3 values of E_b");
-  const ThesisCampaign& c = res.campaign("ch3_eb");
+  const DissertationCampaign& c = res.campaign("ch3_eb");
   if (!have_campaign(r, c)) return r;
   const Series s = series(c, "2d", "E_b", "response.k_tau_s");
   if (!have_points(r, s, 3, "values of E_b with k tau_s")) return r;
@@ -137,10 +137,10 @@ ClaimResult claim_3_3_slight(const ThesisResults& res) {
 }
 
 // Sec. 3.4: "Both k tau_s and k tau_r have approximately linear relationships with V".
-ClaimResult claim_3_4_linear(const ThesisResults& res, const std::string& case_name) {
+ClaimResult claim_3_4_linear(const DissertationResults& res, const std::string& case_name) {
   ClaimResult r = claim("3.4", "k tau_s and k tau_r linear in V, rising (" + case_name + ")", "ch3_v, case " + case_name,
                         "linear: R^2 of a straight-line fit >= 0.95 and slope > 0, for each time; >= 4 values of V");
-  const ThesisCampaign& c = res.campaign("ch3_v");
+  const DissertationCampaign& c = res.campaign("ch3_v");
   if (!have_campaign(r, c)) return r;
   return judge_both_times(r, c, case_name, "V", 4, [](const Series& s, std::string& numbers) {
     const LineFit f = fit_line(s.xs(), s.ys());
@@ -150,10 +150,10 @@ ClaimResult claim_3_4_linear(const ThesisResults& res, const std::string& case_n
 }
 
 // Sec. 3.4: "As V -> 0 ... the characteristic times tend toward k tau_r ~ k tau_s".
-ClaimResult claim_3_4_small_V(const ThesisResults& res, const std::string& case_name) {
+ClaimResult claim_3_4_small_V(const DissertationResults& res, const std::string& case_name) {
   ClaimResult r = claim("3.4", "k tau_r ~ k tau_s as V -> 0 (" + case_name + ")", "ch3_v, case " + case_name,
                         "k tau_r / k tau_s at the smallest V of the campaign within [0.75, 1.33]");
-  const ThesisCampaign& c = res.campaign("ch3_v");
+  const DissertationCampaign& c = res.campaign("ch3_v");
   if (!have_campaign(r, c)) return r;
   const Series s = series(c, case_name, "V", "response.k_tau_s");
   const Series q = series(c, case_name, "V", "recovery.k_tau_r");
@@ -173,10 +173,10 @@ ClaimResult claim_3_4_small_V(const ThesisResults& res, const std::string& case_
 }
 
 // Sec. 3.5: "both k tau_s and k tau_r were virtually independent of ... eta for circular capsules".
-ClaimResult claim_3_5_2d(const ThesisResults& res) {
+ClaimResult claim_3_5_2d(const DissertationResults& res) {
   ClaimResult r = claim("3.5", "in 2D both times nearly independent of eta", "ch3_eta, case 2d",
                         "(max - min)/mean over the eta sweep at most 0.1, for each time; >= 3 values of eta");
-  const ThesisCampaign& c = res.campaign("ch3_eta");
+  const DissertationCampaign& c = res.campaign("ch3_eta");
   if (!have_campaign(r, c)) return r;
   return judge_both_times(r, c, "2d", "eta", 3, [](const Series& s, std::string& numbers) {
     const double spread = relative_spread(s.ys());
@@ -186,11 +186,11 @@ ClaimResult claim_3_5_2d(const ThesisResults& res) {
 }
 
 // Sec. 3.5: "in three dimensions, the characteristic times displayed a clear linear dependence on eta".
-ClaimResult claim_3_5_3d(const ThesisResults& res) {
+ClaimResult claim_3_5_3d(const DissertationResults& res) {
   ClaimResult r = claim("3.5", "in 3D both times linear in eta", "ch3_eta, case 3d",
                         "linear: R^2 of a straight-line fit >= 0.95, slope > 0 and a rise of at least 20 % over the "
                         "sweep, for each time; >= 4 values of eta");
-  const ThesisCampaign& c = res.campaign("ch3_eta");
+  const DissertationCampaign& c = res.campaign("ch3_eta");
   if (!have_campaign(r, c)) return r;
   return judge_both_times(r, c, "3d", "eta", 4, [](const Series& s, std::string& numbers) {
     const LineFit f = fit_line(s.xs(), s.ys());

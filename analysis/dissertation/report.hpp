@@ -6,24 +6,24 @@
 #include <string>
 #include <vector>
 
-#include "analysis/thesis/claims.hpp"
-#include "analysis/thesis/table2.hpp"
+#include "analysis/dissertation/claims.hpp"
+#include "analysis/dissertation/table2.hpp"
 
 namespace capsule::analysis {
 
 // Every campaign THESIS.md reads, in the order of the text.
-const std::vector<std::string>& thesis_campaigns();
+const std::vector<std::string>& dissertation_campaigns();
 
-struct ThesisSummary {
-  std::string file;  // where THESIS.md was written ("" from thesis_markdown)
+struct DissertationSummary {
+  std::string file;  // where THESIS.md was written ("" from dissertation_markdown)
   int agrees = 0, differs = 0, cannot_tell = 0;     // claims
   int coefficients_overlap = 0, coefficients_disjoint = 0, coefficients_unknown = 0;  // Table 2's 18
 };
 
 // The document; `results_label` is how it names the results folder (as given on the command line).
-std::string thesis_markdown(const ThesisResults& results, const std::string& results_label, ThesisSummary* summary = nullptr);
+std::string dissertation_markdown(const DissertationResults& results, const std::string& results_label, DissertationSummary* summary = nullptr);
 
 // Writes `out_file` (parent folders created). Throws std::runtime_error when it cannot.
-ThesisSummary write_thesis(const std::string& results_dir, const std::string& out_file);
+DissertationSummary write_dissertation(const std::string& results_dir, const std::string& out_file);
 
 }  // namespace capsule::analysis

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "analysis/thesis/results.hpp"
-#include "analysis/thesis/rules.hpp"
+#include "analysis/dissertation/results.hpp"
+#include "analysis/dissertation/rules.hpp"
 
 namespace capsule::analysis {
 
@@ -21,6 +21,6 @@ struct ClaimResult {
 
 // Every claim, in the order of the text. Never throws for missing campaigns or members
 // (they give "cannot tell" naming what is missing).
-std::vector<ClaimResult> evaluate_claims(const ThesisResults& results);
+std::vector<ClaimResult> evaluate_claims(const DissertationResults& results);
 
 }  // namespace capsule::analysis

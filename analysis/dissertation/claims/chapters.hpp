@@ -1,0 +1,36 @@
+#pragma once
+// Every claim of the dissertation comparison, one function each, defined in chapter2.cpp ...
+// chapter5.cpp; evaluate_claims (claims.cpp) calls them in the order of the text.
+#include <string>
+
+#include "analysis/dissertation/claims.hpp"
+
+namespace capsule::analysis::claims {
+
+ClaimResult claim_2_mesh(const DissertationResults& res);
+ClaimResult claim_2_G(const DissertationResults& res);
+ClaimResult claim_3_1(const DissertationResults& res);
+ClaimResult claim_3_2_proportional(const DissertationResults& res, const std::string& case_name);
+ClaimResult claim_3_2_constant(const DissertationResults& res, const std::string& case_name);
+ClaimResult claim_3_3_falls(const DissertationResults& res, const std::string& case_name, const std::string& column);
+ClaimResult claim_3_3_slight(const DissertationResults& res);
+ClaimResult claim_3_4_linear(const DissertationResults& res, const std::string& case_name);
+ClaimResult claim_3_4_small_V(const DissertationResults& res, const std::string& case_name);
+ClaimResult claim_3_5_2d(const DissertationResults& res);
+ClaimResult claim_3_5_3d(const DissertationResults& res);
+ClaimResult claim_orders(const DissertationResults& res, const std::string& section, const std::string& statement,
+                         const std::string& campaign, const std::string& fit, int o1, int o2);
+ClaimResult claim_4_1_1_R1(const DissertationResults& res);
+ClaimResult claim_4_1_1_R2(const DissertationResults& res);
+ClaimResult claim_4_1_1_no_bending(const DissertationResults& res);
+ClaimResult claim_4_1_2_r2(const DissertationResults& res);
+ClaimResult claim_4_1_2_fig38(const DissertationResults& res);
+ClaimResult claim_4_2_A(const DissertationResults& res);
+ClaimResult claim_4_2_B(const DissertationResults& res);
+ClaimResult claim_4_2_C(const DissertationResults& res);
+ClaimResult claim_5_1_2(const DissertationResults& res, const std::string& campaign, double V_base, const std::string& figure);
+ClaimResult claim_5_2_pairs(const DissertationResults& res, bool initial);
+ClaimResult claim_5_2_mesh(const DissertationResults& res);
+ClaimResult claim_5_2_gamma(const DissertationResults& res);
+
+}  // namespace capsule::analysis::claims
