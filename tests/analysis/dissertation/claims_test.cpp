@@ -170,12 +170,24 @@ TEST_CASE("Dissertation claims: k tau_r proportional to Ca agrees, differs, or c
     CHECK(find_claim(claims, "3.2", "tau_r/tau_e nearly constant for Ca >= 0.1 (2d)").verdict == Verdict::differs);
   }
   SECTION("too few members cannot tell") {
-    write_ch3_ca(tmp.path, {0.1, 0.2, 0.4}, proportional);
+    // Ca 0.025 is below the rule's range in 2D, so three values of Ca >= 0.05 remain.
+    write_ch3_ca(tmp.path, {0.025, 0.1, 0.2, 0.4}, proportional);
     const auto claims = evaluate_claims(DissertationResults(tmp.path.string()));
     const auto& p = find_claim(claims, "3.2", "proportional to Ca (2d)");
     CHECK(p.verdict == Verdict::cannot_tell);
     CHECK(p.measured.find("members missing") != std::string::npos);
-    CHECK(p.measured.find("3 values of Ca") != std::string::npos);
+    CHECK(p.measured.find("3 values of Ca >= 0.05 with k tau_r, need 4") != std::string::npos);
+  }
+  SECTION("the very small Ca the text exempts do not decide the exponent, and are listed") {
+    // Proportional from Ca 0.05 on; below it k tau_r is 2 at both Ca (the text's "too large").
+    write_ch3_ca(tmp.path, ca, [](double x) { return x < 0.05 ? 2.0 : 10.0 * x; });
+    const auto claims = evaluate_claims(DissertationResults(tmp.path.string()));
+    const auto& p = find_claim(claims, "3.2", "proportional to Ca (2d)");
+    CHECK(p.verdict == Verdict::agrees);
+    CHECK(p.measured.find("p = 1 ") != std::string::npos);
+    CHECK(p.measured.find("[exempt, very small Ca: Ca 0.0125: 2, Ca 0.025: 2]") != std::string::npos);
+    // The text exempts the circle only: the sphere's rule keeps every Ca.
+    CHECK(find_claim(claims, "3.2", "proportional to Ca (3d)").criterion.find("exempts") == std::string::npos);
   }
 }
 
