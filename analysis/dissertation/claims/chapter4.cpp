@@ -17,15 +17,15 @@ std::string order_band(int order) {
 
 // Medians of two fitted times in the bands of O(10^o1) and O(10^o2).
 ClaimResult claim_orders(const DissertationResults& res, const std::string& section, const std::string& statement,
-                         const std::string& campaign, const std::string& fit, int o1, int o2) {
+                         const std::string& campaign, const std::string& fit, int o1, int o2, const Skip& skip) {
   ClaimResult r = claim(section, statement, campaign,
                         "median k tau_R1 in " + order_band(o1) + " and median k tau_R2 in " + order_band(o2) +
                             " (round(log10) = " + std::to_string(o1) + " and " + std::to_string(o2) +
                             ") over every member with the fit; >= 3 members");
   const DissertationCampaign& c = res.campaign(campaign);
   if (!have_campaign(r, c)) return r;
-  const Series s1 = series(c, "", "Ca", fit + ".k_tau_R1", {}, missed_stop_in(res));
-  const Series s2 = series(c, "", "Ca", fit + ".k_tau_R2", {}, missed_stop_in(res));
+  const Series s1 = series(c, "", "Ca", fit + ".k_tau_R1", {}, skip);
+  const Series s2 = series(c, "", "Ca", fit + ".k_tau_R2", {}, skip);
   if (!have_points(r, s1, 3, "members with k tau_R1") || !have_points(r, s2, 3, "members with k tau_R2")) return r;
   const auto y1 = s1.ys(), y2 = s2.ys();
   const double m1 = median(y1), m2 = median(y2);
@@ -125,7 +125,8 @@ ClaimResult claim_4_1_1_no_bending(const DissertationResults& res) {
 
 // Sec. 4.1.2: "this model fit the results with a coefficient of correlation R^2 > 0.97".
 ClaimResult claim_4_1_2_r2(const DissertationResults& res) {
-  ClaimResult r = claim("4.1.2", "tumbling recovery fitted by (90) with R^2 > 0.97", "ch4_2d_tumble (every case)",
+  ClaimResult r = claim("4.1.2", "tumbling recovery fitted by (90) with R^2 > 0.97",
+                        "ch4_2d_tumble (every member stopped at theta = -pi/3)",
                         "every double exponential (90) fit R^2 > 0.97 (a fit refused for R^2 < 0.5, or whose times "
                         "the recovery does not determine, fails); >= 3 fits");
   const DissertationCampaign& c = res.campaign("ch4_2d_tumble");
@@ -136,8 +137,8 @@ ClaimResult claim_4_1_2_r2(const DissertationResults& res) {
   for (const DissertationMember* m : c.in_case("")) {
     const auto it = m->fits.find("double_exponential");
     if (it == m->fits.end()) continue;
-    if (const std::string missed = missed_stop(res, *m); !missed.empty()) {
-      gaps.push_back(m->slug + ": " + missed);
+    if (const std::string outside = outside_tumbling_ensemble(res, *m); !outside.empty()) {
+      gaps.push_back(m->slug + ": " + outside);
     } else if (is_refused_for_r2(it->second)) {
       ++n;
       failures.push_back(m->slug + " R^2 < 0.5" + folded_note(res, *m));

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -174,28 +175,54 @@ inline ClaimResult judge_both_times(ClaimResult r, const DissertationCampaign& c
   return r;
 }
 
+// How a member's shear was to end: on an inclination (until "theta"), a phase angle ("beta")
+// or otherwise, with its target value, its cap max_kt and the t_stop it recorded. nullopt
+// when the member file is not there to tell.
+struct ShearStop {
+  std::string until;
+  double value = k_nan, cap = k_nan, t_stop = k_nan;
+};
+inline std::optional<ShearStop> shear_stop(const DissertationResults& res, const DissertationMember& m) {
+  std::string why;
+  const auto data = res.member_data(m, why, true);
+  if (!data) return std::nullopt;
+  const nlohmann::json& scene = data->attributes.contains("scene") ? data->attributes["scene"] : nlohmann::json();
+  ShearStop s;
+  if (scene.is_object() && scene.contains("protocol") && scene["protocol"].contains("shear")) {
+    const nlohmann::json& shear = scene["protocol"]["shear"];
+    s.until = shear.value("until", "");
+    s.value = shear.value("value", k_nan);
+    s.cap = shear.value("max_kt", k_nan);
+  }
+  const auto t = data->markers.find("t_stop");
+  if (t != data->markers.end()) s.t_stop = t->second;
+  return s;
+}
+
 // Secs. 4.1.1-4.1.2 fit recoveries that start at an inclination (theta = -pi/3, pi/6) or a
 // phase angle (beta = 0.49): a member whose shear was to end there but ran to its cap max_kt
 // recovers from another state and does not stand for the text's point. "" when its stop came,
 // when the shear ends otherwise, or when the member file is not there to tell (its fits.json
 // entry is judged as recorded).
 inline std::string missed_stop(const DissertationResults& res, const DissertationMember& m) {
-  std::string why;
-  const auto data = res.member_data(m, why, true);
-  if (!data) return "";
-  const nlohmann::json& scene = data->attributes.contains("scene") ? data->attributes["scene"] : nlohmann::json();
-  if (!scene.is_object() || !scene.contains("protocol") || !scene["protocol"].contains("shear")) return "";
-  const nlohmann::json& shear = scene["protocol"]["shear"];
-  const std::string until = shear.value("until", "");
-  if (until != "theta" && until != "beta") return "";
-  const double cap = shear.value("max_kt", k_nan);
-  const auto t = data->markers.find("t_stop");
-  const double t_stop = t == data->markers.end() ? k_nan : t->second;
-  const std::string target = until + " = " + num(shear.value("value", k_nan));
-  if (std::isnan(t_stop)) return "the shear never stopped (no t_stop); it was to stop at " + target;
+  const auto s = shear_stop(res, m);
+  if (!s || (s->until != "theta" && s->until != "beta")) return "";
+  const std::string target = s->until + " = " + num(s->value);
+  if (std::isnan(s->t_stop)) return "the shear never stopped (no t_stop); it was to stop at " + target;
   // The shear's last row lies within a step of its cap.
-  if (!std::isnan(cap) && t_stop >= cap - 1e-6 * std::max(1.0, cap))
-    return "the shear ran to its cap kt " + num(cap) + " without reaching " + target + ", so the recovery is not the text's";
+  if (!std::isnan(s->cap) && s->t_stop >= s->cap - 1e-6 * std::max(1.0, s->cap))
+    return "the shear ran to its cap kt " + num(s->cap) + " without reaching " + target + ", so the recovery is not the text's";
+  return "";
+}
+
+// Sec. 4.1.2's ensemble (Figs. 33-38) is of capsules stopped at theta = -pi/3 after a tumble; a
+// member stopped at another inclination (theta = pi/6, Figs. 31-32) is reported beside it, not
+// counted. Also leaves out a member whose stop never came (missed_stop).
+inline std::string outside_tumbling_ensemble(const DissertationResults& res, const DissertationMember& m) {
+  if (std::string why = missed_stop(res, m); !why.empty()) return why;
+  const auto s = shear_stop(res, m);
+  if (s && s->until == "theta" && std::abs(s->value + std::numbers::pi / 3) > 1e-6)
+    return "stopped at theta = " + num(s->value) + ", not the ensemble's -pi/3 (reported, not counted)";
   return "";
 }
 
@@ -225,6 +252,9 @@ inline std::string folded_note(const DissertationResults& res, const Dissertatio
 
 inline Skip missed_stop_in(const DissertationResults& res) {
   return [&res](const DissertationMember& m) { return missed_stop(res, m); };
+}
+inline Skip outside_tumbling_ensemble_in(const DissertationResults& res) {
+  return [&res](const DissertationMember& m) { return outside_tumbling_ensemble(res, m); };
 }
 
 inline bool is_refused_for_r2(const FitResult& f) { return !f.ok && f.reason.rfind("the model does not describe the data", 0) == 0; }

@@ -110,11 +110,12 @@ void write_table1_member(const std::filesystem::path& file, double D_stop, doubl
 // at `t_stop` (50 = the cap: the crossing never came), then recovers for 50 kt.
 // With `folded`, D_xy is -0.07 at the stop and jumps to 0.6 one output interval later (a folded
 // outline, whose chords are discontinuous).
-void write_tumble_member(const std::filesystem::path& file, double t_stop, bool folded = false) {
+void write_tumble_member(const std::filesystem::path& file, double t_stop, bool folded = false,
+                         double theta_stop = -M_PI / 3) {
   std::filesystem::create_directories(file.parent_path());
   capsule::io::MemberWriter w(file.string());
   w.set_scene({{"dim", 2}, {"Ca", 0.4}, {"E_b", 0.05}, {"V", 5.0}, {"eta", 0.0}, {"shape", "biconcave"},
-               {"protocol", {{"shear", {{"until", "theta"}, {"value", -M_PI / 3}, {"max_kt", 50.0}}},
+               {"protocol", {{"shear", {{"until", "theta"}, {"value", theta_stop}, {"max_kt", 50.0}}},
                              {"recover", {{"until", "time"}, {"kt", 50.0}}}}}});
   for (int i = 0; i <= 2000; ++i) {
     const double t = i / 20.0;  // an output interval of 0.05 kt, as ch4_2d_tumble's
@@ -434,13 +435,13 @@ TEST_CASE("Dissertation claims: a tumbling member whose theta stop never came is
   const auto dir = tmp.path / "ch4_2d_tumble";
   // Three members with (90) fits of the text's orders (k tau_R1 0.2, k tau_R2 2); the third
   // stops at `third_stop`.
-  const auto judge = [&](double third_stop, bool third_folded = false) {
+  const auto judge = [&](double third_stop, bool third_folded = false, double third_theta = -M_PI / 3) {
     nlohmann::json members = nlohmann::json::array();
     const std::vector<std::pair<double, double>> points{{0.2, 14.0}, {0.4, 16.0}, {0.6, third_stop}};
     for (const auto& [ca, t_stop] : points) {
       const std::string slug = "Ca" + short_number(ca), rel = "members/" + slug + "/member.h5";
       const bool folded = third_folded && ca > 0.5;
-      write_tumble_member(dir / rel, t_stop, folded);
+      write_tumble_member(dir / rel, t_stop, folded, ca > 0.5 ? third_theta : -M_PI / 3);
       members.push_back(member_json(slug, "Ca", {{"Ca", ca}, {"E_b", 0.05}, {"V", 5.0}, {"eta", 0.0}},
                                     {{"double_exponential", known_fit("double exponential (90)",
                                                                       {{"k_tau_R1", {0.2, 0.01}}, {"k_tau_R2", {2.0, 0.1}}},
@@ -467,6 +468,15 @@ TEST_CASE("Dissertation claims: a tumbling member whose theta stop never came is
     INFO(r2.measured);
     CHECK(r2.verdict == Verdict::cannot_tell);
     CHECK(r2.measured.find("ran to its cap") != std::string::npos);
+  }
+  SECTION("a member stopped at theta = pi/6 is reported beside the -pi/3 ensemble, not counted") {
+    const auto claims = judge(18.0, false, M_PI / 6);
+    for (const char* which : {"O(0.1)", "R^2 > 0.97"}) {
+      const auto& c = find_claim(claims, "4.1.2", which);
+      INFO(c.measured);
+      CHECK(c.verdict == Verdict::cannot_tell);  // two members of the ensemble are left
+      CHECK(c.measured.find("Ca0.6: stopped at theta = 0.524, not the ensemble's -pi/3") != std::string::npos);
+    }
   }
   SECTION("a folded capsule's poor fit differs, and the claim says D_xy jumped") {
     const auto claims = judge(18.0, true);
