@@ -397,6 +397,24 @@ TEST_CASE("Dissertation claims: case A's partial recovery is judged from D_stop,
   CHECK(c.measured.find("not defined") != std::string::npos);
 }
 
+TEST_CASE("Dissertation claims: case C is judged by how near it ends to the undeformed D_xy, an overshoot counting", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_c");
+  // A ends at 0.53 (0.02 from 0.51); C ends at D_end_C, without shape memory (0.8 -> 0.78 rad).
+  const auto judge = [&](double D_end_C) {
+    write_table1_member(tmp.path / "ch4_3d_cases/members/A/member.h5", 0.57, 0.53, 0.2);
+    write_table1_member(tmp.path / "ch4_3d_cases/members/C/member.h5", 0.58, D_end_C, 0.78);
+    write_fits(tmp.path, "ch4_3d_cases",
+               nlohmann::json::array({member_json("A", "A_c0_-2.09", {{"E_b", 0.025}}, {}, "members/A/member.h5"),
+                                      member_json("C", "C", {{"E_b", 0.025}}, {}, "members/C/member.h5")}));
+    return find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "4.2", "case C");
+  };
+  CHECK(judge(0.515).verdict == Verdict::agrees);  // 0.005 from 0.51 against A's 0.02
+  const ClaimResult past = judge(0.45);            // overshoot: 0.06 from 0.51, though its "share" is larger
+  INFO(past.measured);
+  CHECK(past.verdict == Verdict::differs);
+  CHECK(past.measured.find("|D_end - 0.51| 0.06 against A 0.02") != std::string::npos);
+}
+
 TEST_CASE("Dissertation claims: Fig. 12's G independence agrees within 2 %, differs beyond, cannot tell with two", "[analysis][dissertation]") {
   TempDir tmp("dissertation_claims_G");
   const auto dir = tmp.path / "ch2_3d_visco";
