@@ -180,43 +180,62 @@ ClaimResult claim_5_2_mesh(const DissertationResults& res) {
                             "/resolution/mesh_level", "level", "the mesh levels", 0.05, 3});
 }
 
+// The factor max / min of gamma_max over the last 2T of the shear (one full period of
+// sin(pi t/T)) of a power-law member; NaN (why set) when the member has no gamma_max series
+// (why empty: Kelvin-Voigt) or is shorter than one period.
+double gamma_factor(const io::MemberData& d, const std::string& slug, std::string& why, std::string& range) {
+  const auto g = d.series.find("gamma_max");
+  const auto kt_it = d.series.find("kt");
+  if (g == d.series.end() || kt_it == d.series.end() || kt_it->second.size() != g->second.size() || kt_it->second.empty())
+    return k_nan;
+  const double T = scene_value(d, "/protocol/shear/oscillatory_period_kt");
+  const auto& kt = kt_it->second;
+  const double t_stop = d.markers.count("t_stop") && std::isfinite(d.markers.at("t_stop")) ? d.markers.at("t_stop") : kt.back();
+  if (!(T > 0.0) || t_stop - 2 * T < kt.front()) {
+    why = slug + ": shorter than one period (T " + num(T) + ")";
+    return k_nan;
+  }
+  double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+  for (std::size_t i = 0; i < kt.size(); ++i)
+    if (kt[i] >= t_stop - 2 * T && kt[i] <= t_stop) lo = std::min(lo, g->second[i]), hi = std::max(hi, g->second[i]);
+  range = "gamma_max " + num(lo) + " to " + num(hi);
+  return hi / lo;
+}
+
 // Sec. 5.2.2: "At this modest oscillation frequency, gamma changes by a factor of 6 - 8 over a period".
+// As in 5.2.1, a member whose value moves with resolution enough to change the verdict cannot
+// decide it: here, when the factor moves between the two finest levels of its ladder by more
+// than its distance to the nearer edge of [5.5, 8.5].
 ClaimResult claim_5_2_gamma(const DissertationResults& res) {
   ClaimResult r = claim("5.2.2", "the maximum surface shear rate varies by a factor 6-8 over an oscillation period (Fig. 67)",
                         "ch5_oscillatory, power-law cases",
                         "max / min of gamma_max over the last 2T of the shear (one full period of sin(pi t/T)) within "
-                        "[5.5, 8.5], for every power-law member");
+                        "[5.5, 8.5], for every power-law member; cannot tell when a factor moves from the next coarser "
+                        "level by more than its distance to the nearer edge");
   const DissertationCampaign& c = res.campaign("ch5_oscillatory");
   if (!have_campaign(r, c)) return r;
+  constexpr double lo_edge = 5.5, hi_edge = 8.5;
   bool ok = true, judged = false;
-  std::string text, why;
+  std::string text, why, unconverged;
+  const auto factor_of = [](const ShearMember* m) {
+    std::string w, range;
+    return gamma_factor(*m->data, m->member->slug, w, range);
+  };
   for (const DissertationMember* m : c.in_case("")) {
-    std::string w;
-    const auto d = res.member_data(*m, w);
-    if (!d) {
-      why += (why.empty() ? "" : "; ") + w;
-      continue;
+    std::string w, range;
+    const auto sm = shear_member(res, *m, w);
+    const double factor = sm ? gamma_factor(*sm->data, m->slug, w, range) : k_nan;
+    if (std::isnan(factor)) {
+      if (!w.empty()) why += (why.empty() ? "" : "; ") + w;
+      continue;  // w empty: Kelvin-Voigt, no shear-rate series
     }
-    const auto g = d->series.find("gamma_max");
-    if (g == d->series.end()) continue;  // Kelvin-Voigt: no shear-rate series
-    const double T = scene_value(*d, "/protocol/shear/oscillatory_period_kt");
-    const auto kt_it = d->series.find("kt");
-    if (kt_it == d->series.end() || kt_it->second.size() != g->second.size() || kt_it->second.empty()) continue;
-    const auto& kt = kt_it->second;
-    const double t_stop = d->markers.count("t_stop") && std::isfinite(d->markers.at("t_stop")) ? d->markers.at("t_stop")
-                                                                                                : kt.back();
-    if (!(T > 0.0) || t_stop - 2 * T < kt.front()) {
-      why += (why.empty() ? "" : "; ") + m->slug + ": shorter than one period (T " + num(T) + ")";
-      continue;
-    }
-    double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
-    for (std::size_t i = 0; i < kt.size(); ++i)
-      if (kt[i] >= t_stop - 2 * T && kt[i] <= t_stop) lo = std::min(lo, g->second[i]), hi = std::max(hi, g->second[i]);
-    const double factor = hi / lo;
     judged = true;
-    ok = ok && factor >= 5.5 && factor <= 8.5;
-    text += (text.empty() ? "" : "; ") + m->case_name + ": factor " + num(factor) + " (gamma_max " + num(lo) + " to " +
-            num(hi) + ")";
+    ok = ok && factor >= lo_edge && factor <= hi_edge;
+    text += (text.empty() ? "" : "; ") + m->case_name + ": factor " + num(factor) + " (" + range + ")";
+    const auto shift = resolution_shift(res, c, *sm, factor_of);
+    if (shift && std::abs(factor - shift->coarse_value) > std::min(std::abs(factor - lo_edge), std::abs(factor - hi_edge)))
+      unconverged += (unconverged.empty() ? "" : "; ") + m->case_name + ": " + num(shift->coarse_value) + " at " +
+                     shift->key + " " + num(shift->coarse_level) + ", " + num(factor) + " at " + num(shift->fine_level);
   }
   if (!judged) {
     r.measured = "cannot tell (members missing): no power-law member with a gamma_max series" +
@@ -224,6 +243,12 @@ ClaimResult claim_5_2_gamma(const DissertationResults& res) {
     return r;
   }
   if (!why.empty()) text += "; not judged: " + why;
+  if (!unconverged.empty()) {
+    r.verdict = Verdict::cannot_tell;
+    r.measured = "cannot tell (not converged in resolution: the factor moves between the two finest levels by more than "
+                 "its distance to the band's edge; " + unconverged + "): " + text;
+    return r;
+  }
   set(r, ok, text);
   return r;
 }

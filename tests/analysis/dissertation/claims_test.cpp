@@ -415,6 +415,48 @@ TEST_CASE("Dissertation claims: case C is judged by how near it ends to the unde
   CHECK(past.measured.find("|D_end - 0.51| 0.06 against A 0.02") != std::string::npos);
 }
 
+// A ch5_oscillatory power-law member: five periods T = 4 of oscillatory shear, gamma_max from
+// 0.03 to 0.03 x factor and back each half period (|sin(pi t / T)|).
+void write_oscillatory_member(const std::filesystem::path& file, double factor) {
+  std::filesystem::create_directories(file.parent_path());
+  capsule::io::MemberWriter w(file.string());
+  w.set_scene({{"dim", 3}, {"Ca", 0.1}, {"E_b", 0.0}, {"V", 1.0}, {"power_law", {{"K", 10.0}, {"n", 0.64}}},
+               {"protocol", {{"shear", {{"oscillatory_period_kt", 4.0}}}}}});
+  for (int i = 0; i <= 400; ++i) {
+    const double t = 0.05 * i, g = 0.03 * (1.0 + (factor - 1.0) * std::abs(std::sin(M_PI * t / 4.0)));
+    w.append({{"kt", t}, {"D_xy", 0.2 * std::abs(std::sin(M_PI * t / 4.0))}, {"theta", 0.3}, {"shear_on", 1.0},
+              {"gamma_max", g}});
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  w.set_markers({{"t_max", nan}, {"D_max", nan}, {"t_stop", 20.0}, {"D_stop", 0.0}, {"t_min", nan}, {"D_min", nan},
+                 {"t_end", 20.0}, {"D_inf", nan}});
+  w.finish("complete");
+}
+
+TEST_CASE("Dissertation claims: 5.2.2 cannot tell when the factor moves with resolution across its band's edge", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_gamma");
+  const auto dir = tmp.path / "ch5_oscillatory";
+  // a = 7: factor 6, 0.5 inside the band [5.5, 8.5]; a = 5: `coarse`.
+  const auto judge = [&](double coarse) {
+    write_oscillatory_member(dir / "members/n064/member.h5", 6.0);
+    write_oscillatory_member(dir / "members/n064a5/member.h5", coarse);
+    nlohmann::json m = nlohmann::json::array(
+        {member_json("n064", "powerlaw_n064", {{"resolution.a", 7.0}}, {}, "members/n064/member.h5"),
+         member_json("n064a5", "powerlaw_n064", {{"resolution.a", 5.0}}, {}, "members/n064a5/member.h5")});
+    const nlohmann::json analysis{{"fits", {"response"}}, {"ladder", {{{"key", "resolution.a"}, {"quantities", {"response.k_tau_s"}}}}}};
+    write_fits(tmp.path, "ch5_oscillatory", m, nlohmann::json::array(), analysis);
+    return find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "5.2.2", "factor 6-8");
+  };
+  const ClaimResult settled = judge(6.2);  // moved 0.2, less than the 0.5 to the edge
+  INFO(settled.measured);
+  CHECK(settled.verdict == Verdict::agrees);
+  CHECK(settled.measured.find("powerlaw_n064: factor 6 (gamma_max 0.03 to 0.18)") != std::string::npos);
+  const ClaimResult moving = judge(7.0);  // moved 1.0: the verdict is not settled in resolution
+  INFO(moving.measured);
+  CHECK(moving.verdict == Verdict::cannot_tell);
+  CHECK(moving.measured.find("powerlaw_n064: 7 at resolution.a 5, 6 at 7") != std::string::npos);
+}
+
 TEST_CASE("Dissertation claims: Fig. 12's G independence agrees within 2 %, differs beyond, cannot tell with two", "[analysis][dissertation]") {
   TempDir tmp("dissertation_claims_G");
   const auto dir = tmp.path / "ch2_3d_visco";
