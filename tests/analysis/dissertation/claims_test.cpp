@@ -192,6 +192,24 @@ TEST_CASE("Dissertation claims: k tau_r proportional to Ca agrees, differs, or c
   }
 }
 
+TEST_CASE("Dissertation claims: 3.3's slight fall of the circle's k tau_s names the E_b range over which it is slight", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_eb");
+  const auto judge = [&](const std::vector<std::pair<double, double>>& points) {
+    nlohmann::json members = nlohmann::json::array();
+    for (const auto& [eb, k_tau_s] : points)
+      members.push_back(member_json("Eb" + short_number(eb), "2d", {{"Ca", 0.04}, {"E_b", eb}, {"V", 1.0}, {"eta", 0.0}},
+                                    {{"response", known_fit("response (85)", {{"k_tau_s", {k_tau_s, 0.01}}})}}));
+    write_fits(tmp.path, "ch3_eb", members);
+    return find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "3.3", "only slightly");
+  };
+  // 1 -> 0.84 -> 0.5: 16 % to E_b 0.05, then 50 % at 0.2.
+  const ClaimResult c = judge({{0.0, 1.0}, {0.05, 0.84}, {0.2, 0.5}});
+  INFO(c.measured);
+  CHECK(c.verdict == Verdict::differs);
+  CHECK(c.measured.find("falls by 50 %; by less than 30 % up to E_b 0.05") != std::string::npos);
+  CHECK(judge({{0.0, 1.0}, {0.05, 0.95}, {0.2, 0.85}}).verdict == Verdict::agrees);
+}
+
 TEST_CASE("Dissertation claims: a campaign with a resolution ladder is judged at each point's finest shipped level", "[analysis][dissertation]") {
   TempDir tmp("dissertation_claims_ladder");
   const std::vector<double> ca{0.0125, 0.025, 0.05, 0.1, 0.2, 0.4};
