@@ -275,6 +275,20 @@ TEST_CASE("Dissertation claims: the R^2 rule of Sec. 3.1 differs on one poor fit
     CHECK(c.verdict == Verdict::differs);
     CHECK(c.measured.find("recovery R^2 0.95 (bound 0.99)") != std::string::npos);
   }
+  SECTION("a recovery fit refused for R^2 < 0.5 is the lowest R^2") {
+    nlohmann::json members = nlohmann::json::array();
+    for (double c : ca)
+      members.push_back(member_json("Ca_" + std::to_string(c), "2d", {{"Ca", c}, {"E_b", 0.05}, {"V", 1.0}, {"eta", 0.0}},
+                                    {{"response", known_fit("response (85)", {{"k_tau_s", {0.4, 0.01}}})},
+                                     {"recovery", c < 0.02 ? FitResult::failure("recovery (86)",
+                                                                                "the model does not describe the data: R^2 = 0.3")
+                                                           : known_fit("recovery (86)", {{"k_tau_r", {c, 0.01}}}, 0.995)}}));
+    write_fits(tmp.path, "ch3_ca", members);
+    const auto& c = find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "3.1", "R^2");
+    INFO(c.measured);
+    CHECK(c.verdict == Verdict::differs);
+    CHECK(c.measured.find("lowest R^2: response 0.999, recovery < 0.5 (1 refused)") != std::string::npos);
+  }
 }
 
 TEST_CASE("Dissertation claims: no recovery of biconcavity at E_b = 0, judged from the member file", "[analysis][dissertation]") {
