@@ -68,6 +68,8 @@ std::string dissertation_markdown(const DissertationResults& results, const std:
       if (!c.measured) ++s.coefficients_unknown;
       else if (c.overlap) ++s.coefficients_overlap;
       else ++s.coefficients_disjoint;
+      if (const auto widened = overlap_with_resolution_error(row, c))
+        ++(*widened ? s.coefficients_overlap_with_resolution : s.coefficients_disjoint_with_resolution);
     }
   }
   const auto claims = evaluate_claims(results);
@@ -89,9 +91,14 @@ std::string dissertation_markdown(const DissertationResults& results, const std:
   md += "## Summary\n\n";
   md += "- Claims: " + std::to_string(s.agrees) + " agree, " + std::to_string(s.differs) + " differ, " +
         std::to_string(s.cannot_tell) + " cannot tell (of " + std::to_string(claims.size()) + ").\n";
-  md += "- Table 2 coefficients: " + std::to_string(s.coefficients_overlap) + " with overlapping 95 % intervals, " +
-        std::to_string(s.coefficients_disjoint) + " without, " + std::to_string(s.coefficients_unknown) +
-        " cannot tell (of 18).\n\n";
+  md += "- Table 2 coefficients, statistical 95 % intervals only: " + std::to_string(s.coefficients_overlap) +
+        " overlap, " + std::to_string(s.coefficients_disjoint) + " do not, " + std::to_string(s.coefficients_unknown) +
+        " cannot tell (of 18).\n";
+  md += "- Table 2 coefficients with the ladder's resolution error added to the toolkit's interval: " +
+        std::to_string(s.coefficients_overlap_with_resolution) + " overlap, " +
+        std::to_string(s.coefficients_disjoint_with_resolution) + " do not (of the " +
+        std::to_string(s.coefficients_overlap_with_resolution + s.coefficients_disjoint_with_resolution) +
+        " whose campaign gives a ladder error).\n\n";
   md += campaign_table(results).to_markdown() + "\n";
   // One section: its title, what it shows, and its table.
   const auto section = [&md](const std::string& title, const std::string& intro, const Table& table) {

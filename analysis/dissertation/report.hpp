@@ -18,6 +18,8 @@ struct DissertationSummary {
   std::string file;  // where THESIS.md was written ("" from dissertation_markdown)
   int agrees = 0, differs = 0, cannot_tell = 0;     // claims
   int coefficients_overlap = 0, coefficients_disjoint = 0, coefficients_unknown = 0;  // Table 2's 18
+  // with the ladder's resolution error added to the toolkit's interval (coefficients that have one)
+  int coefficients_overlap_with_resolution = 0, coefficients_disjoint_with_resolution = 0;
 };
 
 // The document; `results_label` is how it names the results folder (as given on the command line).

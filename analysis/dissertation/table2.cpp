@@ -113,11 +113,19 @@ std::string text_r2(const Table2RowComparison& row) {
 }
 }  // namespace
 
+std::optional<bool> overlap_with_resolution_error(const Table2RowComparison& row, const CoefficientComparison& c) {
+  const auto e = row.entry.ladder_error.find(c.name);
+  if (!row.found || !c.measured || e == row.entry.ladder_error.end()) return std::nullopt;
+  const double w = c.half_width + std::abs(e->second);
+  return intervals_overlap(c.value - w, c.value + w, c.reference - c.reference_half_width,
+                           c.reference + c.reference_half_width);
+}
+
 Table table2_side_by_side(const std::vector<Table2RowComparison>& rows) {
   Table t;
   t.title = "Table 2 (Sec. 5.1.1): k tau = a eta + b V + c, dissertation against this toolkit (± = 95 % half-width)";
   t.header = {"row", "campaign", "coefficient", "dissertation", "toolkit", "difference", "95 % overlap",
-              "R^2 dissertation", "R^2 toolkit", "N", "resolution error (ladder)"};
+              "R^2 dissertation", "R^2 toolkit", "N", "resolution error (ladder)", "overlap with it"};
   for (const auto& row : rows) {
     const Table2Row& ref = *row.reference;
     const std::string campaign = row.ensemble ? row.ensemble->campaign : "";
@@ -126,7 +134,7 @@ Table table2_side_by_side(const std::vector<Table2RowComparison>& rows) {
       const char* names[] = {"a", "b", "c"};
       for (int i = 0; i < 3; ++i)
         t.rows.push_back({row_label(ref), campaign, names[i], plus_minus(refs[i].first, refs[i].second),
-                          "cannot tell (" + row.why + ")", "", "", i == 0 ? text_r2(row) : "", "", "", ""});
+                          "cannot tell (" + row.why + ")", "", "", i == 0 ? text_r2(row) : "", "", "", "", ""});
       continue;
     }
     std::string where = campaign;
@@ -148,6 +156,8 @@ Table table2_side_by_side(const std::vector<Table2RowComparison>& rows) {
       else if (const auto n = row.entry.ladder_note.find(c.name); n != row.entry.ladder_note.end())
         resolution_error = "n/a: " + n->second;
       cells.push_back(resolution_error);
+      const auto widened = overlap_with_resolution_error(row, c);
+      cells.push_back(widened ? (*widened ? "yes" : "NO") : "");
       t.rows.push_back(cells);
     }
   }

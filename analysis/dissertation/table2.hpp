@@ -3,6 +3,7 @@
 // the bilinear fit (95)-(96) of the campaign that regenerates it, and the ratios b/a the
 // text quotes, with 95 % intervals. The matching and the per-coefficient verdicts are
 // table2_compare's (the same as `study compare --table2`).
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,11 @@ RatioInterval ratio_b_over_a_interval(const FitResult& bilinear);
 // From 95 % half-widths alone (first-order delta method, a and b taken as independent):
 // hw = |b/a| sqrt((hw_a/a)^2 + (hw_b/b)^2). Used for the text's Table 2.
 RatioInterval ratio_from_half_widths(double a, double a_hw, double b, double b_hw);
+
+// Whether the toolkit's 95 % interval widened by the ladder's resolution error of the
+// coefficient (bilinear.ladder) overlaps the text's interval; nullopt when the fit failed or the
+// campaign has no ladder error for it.
+std::optional<bool> overlap_with_resolution_error(const Table2RowComparison& row, const CoefficientComparison& c);
 
 Table table2_side_by_side(const std::vector<Table2RowComparison>& rows);
 Table table2_ratios(const std::vector<Table2RowComparison>& rows);

@@ -139,7 +139,8 @@ int write_dissertation_comparison(const fs::path& results_dir, const fs::path& o
   const analysis::DissertationSummary s = analysis::write_dissertation(results_dir.string(), out_file.string());
   out << "wrote " << s.file << "\nclaims: " << s.agrees << " agree, " << s.differs << " differ, " << s.cannot_tell
       << " cannot tell\nTable 2 coefficients: " << s.coefficients_overlap << " overlap, " << s.coefficients_disjoint
-      << " do not, " << s.coefficients_unknown << " cannot tell\n";
+      << " do not, " << s.coefficients_unknown << " cannot tell (statistical intervals); with the ladder's resolution error: "
+      << s.coefficients_overlap_with_resolution << " overlap, " << s.coefficients_disjoint_with_resolution << " do not\n";
   return 0;
 }
 

@@ -37,6 +37,13 @@ TEST_CASE("Dissertation Table 2: known coefficients give the right differences a
   CHECK(rs.coefficients[1].overlap);
   CHECK(rs.coefficients[2].difference == Approx(0.1));
   CHECK(rs.coefficients[2].overlap);        // [0.4658, 0.5658] against [0.352, 0.4796]: share [0.4658, 0.4796]
+  // With a ladder's resolution error the toolkit's interval widens by it: a = 0.0408 ± (0.002 + e).
+  Table2RowComparison laddered = rs;
+  CHECK_FALSE(overlap_with_resolution_error(laddered, laddered.coefficients[0]).has_value());  // no ladder error
+  laddered.entry.ladder_error["a"] = 0.017;  // [0.0218, 0.0598] against [0.0169, 0.0247]: overlap
+  CHECK(overlap_with_resolution_error(laddered, laddered.coefficients[0]) == std::optional<bool>(true));
+  laddered.entry.ladder_error["a"] = 0.01;   // [0.0288, 0.0528]: none
+  CHECK(overlap_with_resolution_error(laddered, laddered.coefficients[0]) == std::optional<bool>(false));
 
   const auto& rr = rows[1];  // k_tau_r, Ca 0.05, E_b 0
   REQUIRE(rr.found);
