@@ -378,7 +378,9 @@ ClaimResult claim_4_2_C(const DissertationResults& res) {
     }
     parts.add(nearer && x.no_memory(), x.text() + ", |D_end - 0.51| " + num(distance(x)) + " against " + against);
   }
-  if (rc.empty()) part_missing(parts.why, why.empty() ? std::string("no case C member") : why);
+  // A member whose file cannot be read leaves "every C member" undecided.
+  if (!why.empty()) part_missing(parts.why, why);
+  else if (rc.empty()) part_missing(parts.why, "no case C member");
   return parts.finish(r);
 }
 
