@@ -204,24 +204,28 @@ inline std::optional<ShearStop> shear_stop(const DissertationResults& res, const
 // recovers from another state and does not stand for the text's point. "" when its stop came,
 // when the shear ends otherwise, or when the member file is not there to tell (its fits.json
 // entry is judged as recorded).
+inline std::string missed_stop(const ShearStop& s) {
+  if (s.until != "theta" && s.until != "beta") return "";
+  const std::string target = s.until + " = " + num(s.value);
+  if (std::isnan(s.t_stop)) return "the shear never stopped (no t_stop); it was to stop at " + target;
+  // The shear's last row lies within a step of its cap.
+  if (!std::isnan(s.cap) && s.t_stop >= s.cap - 1e-6 * std::max(1.0, s.cap))
+    return "the shear ran to its cap kt " + num(s.cap) + " without reaching " + target + ", so the recovery is not the text's";
+  return "";
+}
 inline std::string missed_stop(const DissertationResults& res, const DissertationMember& m) {
   const auto s = shear_stop(res, m);
-  if (!s || (s->until != "theta" && s->until != "beta")) return "";
-  const std::string target = s->until + " = " + num(s->value);
-  if (std::isnan(s->t_stop)) return "the shear never stopped (no t_stop); it was to stop at " + target;
-  // The shear's last row lies within a step of its cap.
-  if (!std::isnan(s->cap) && s->t_stop >= s->cap - 1e-6 * std::max(1.0, s->cap))
-    return "the shear ran to its cap kt " + num(s->cap) + " without reaching " + target + ", so the recovery is not the text's";
-  return "";
+  return s ? missed_stop(*s) : "";
 }
 
 // Sec. 4.1.2's ensemble (Figs. 33-38) is of capsules stopped at theta = -pi/3 after a tumble; a
 // member stopped at another inclination (theta = pi/6, Figs. 31-32) is reported beside it, not
 // counted. Also leaves out a member whose stop never came (missed_stop).
 inline std::string outside_tumbling_ensemble(const DissertationResults& res, const DissertationMember& m) {
-  if (std::string why = missed_stop(res, m); !why.empty()) return why;
-  const auto s = shear_stop(res, m);
-  if (s && s->until == "theta" && std::abs(s->value + std::numbers::pi / 3) > 1e-6)
+  const auto s = shear_stop(res, m);  // the member file is read once for both checks
+  if (!s) return "";
+  if (std::string why = missed_stop(*s); !why.empty()) return why;
+  if (s->until == "theta" && std::abs(s->value + std::numbers::pi / 3) > 1e-6)
     return "stopped at theta = " + num(s->value) + ", not the ensemble's -pi/3 (reported, not counted)";
   return "";
 }
