@@ -82,11 +82,18 @@ inline double peskin4_delta(double r) {
   return 0.0;
 }
 
+// The first node of the stencil of a point at coordinate x (delta_stencil(x, kernel).first).
+inline int stencil_first(double x, Kernel kernel) {
+  if (kernel == Kernel::roma3) return static_cast<int>(std::floor(x)) - 1;  // node floor(x) at floor(x) + 1/2 is the nearest
+  if (kernel == Kernel::linear2) return static_cast<int>(std::floor(x - 0.5));
+  return static_cast<int>(std::floor(x - 0.5)) - 1;  // peskin4 and cosine
+}
+
 inline DeltaStencil1D delta_stencil(double x, Kernel kernel = Kernel::cosine) {
   DeltaStencil1D s;
   s.width = kernel_width(kernel);
+  s.first = stencil_first(x, kernel);
   if (kernel == Kernel::roma3) {
-    s.first = static_cast<int>(std::floor(x)) - 1;  // node floor(x) at floor(x) + 1/2 is the nearest
     const double r1 = x - (s.first + 1.5);          // offset from the middle node, in [-1/2, 1/2)
     s.w[1] = (1.0 + std::sqrt(std::max(0.0, 1.0 - 3.0 * r1 * r1))) / 3.0;
     // the outer two follow from partition of unity and zero first moment: w0 - w2 = -r1
@@ -96,14 +103,12 @@ inline DeltaStencil1D delta_stencil(double x, Kernel kernel = Kernel::cosine) {
     return s;
   }
   if (kernel == Kernel::linear2) {
-    s.first = static_cast<int>(std::floor(x - 0.5));
     const double r0 = x - (s.first + 0.5);  // in [0, 1)
     s.w[0] = 1.0 - r0;
     s.w[1] = r0;
     return s;
   }
   if (kernel == Kernel::peskin4) {
-    s.first = static_cast<int>(std::floor(x - 0.5)) - 1;
     const double r0 = x - (s.first + 0.5);  // in [1, 2): offsets r0, r0 - 1 in [0, 1), r0 - 2, r0 - 3
     const double r1 = r0 - 1.0;             // in [0, 1)
     // one square root serves the two inner nodes and one the two outer nodes
@@ -114,7 +119,6 @@ inline DeltaStencil1D delta_stencil(double x, Kernel kernel = Kernel::cosine) {
     s.w[3] = 0.5 - s.w[1];
     return s;
   }
-  s.first = static_cast<int>(std::floor(x - 0.5)) - 1;
   // r_m = x - (first + m + 1/2): r_0 in [1, 2), r_m = r_0 - m. cos(pi (r - m)/2) cycles
   // through c, s, -c, -s with c = cos(pi r_0 / 2), s = sin(pi r_0 / 2): one cos and one sin.
   const double r0 = x - (s.first + 0.5);

@@ -36,6 +36,7 @@
 #include "solver/ib/interpolation.hpp"
 #include "solver/ib/membrane_update.hpp"
 #include "solver/ib/power_law_viscosity.hpp"
+#include "solver/ib/spreading_box.hpp"
 #include "solver/ib/support_rows.hpp"
 #include "solver/ib/viscosity_contrast.hpp"
 #include "solver/lbm/fluid.hpp"
@@ -75,8 +76,9 @@ double shear_modulus_3d(const Scene& s, const Units& u) { return s.law == "neo-h
 
 struct Timings {
   // Wall seconds: the fluid step; spreading, interpolation and the position update; the
-  // viscosity field (contrast and power law, V != 1 or K > 0); its power-law part alone.
-  double fluid = 0, coupling = 0, power_law = 0, viscosity = 0;
+  // viscosity field (contrast and power law, V != 1 or K > 0); its power-law part alone; the
+  // clearing of the force field and spreading (21) alone (part of coupling).
+  double fluid = 0, coupling = 0, power_law = 0, viscosity = 0, spreading = 0;
 };
 
 class Simulation3D {
@@ -159,10 +161,9 @@ class Simulation3D {
     auto t0 = Clock::now();
     double* p[3] = {fluid_.force(0), fluid_.force(1), fluid_.force(2)};
     // The force field is zero except where the last step spread: clear only there.
-    if (spread_from_.empty()) fluid_.clear_force();
-    else ib::clear_support<3>(grid_, spread_from_.data(), n, p, kernel_);
-    spread_from_.assign(positions(), positions() + 3 * n);
-    ib::spread<3>(grid_, positions(), reinterpret_cast<const double*>(force_.data()), n, p, kernel_);  // (21)
+    spreading_.clear_last(grid_, p);
+    spreading_.spread(grid_, positions(), reinterpret_cast<const double*>(force_.data()), n, p, kernel_);  // (21)
+    timings_.spreading += std::chrono::duration<double>(Clock::now() - t0).count();
     const double wall = 0.5 * units_.shear_rate * grid_.ny * shear_factor;                  // k H / 2 (1)
     fluid_.set_wall_velocity(-wall, wall);
     const double* u[3] = {fluid_.velocity(0), fluid_.velocity(1), fluid_.velocity(2)};
@@ -307,7 +308,7 @@ class Simulation3D {
       power_law_->update(positions(), reinterpret_cast<const double*>(normals.data()), areas.data(),
                          mesh_.vertex_count(), u);
     }
-    spread_from_.clear();  // the next step clears the whole force field, then spreads
+    spreading_.forget();  // the next step clears the whole force field, then spreads
   }
 
   std::vector<double> shape() const {
@@ -446,7 +447,7 @@ class Simulation3D {
   std::vector<double> base_nu_;  // the contrast viscosity (16) per node, kept when both act
   std::vector<double> U_;
   std::vector<double> start_angle_;  // each vertex's angle about the start centroid in the shear plane
-  std::vector<double> spread_from_;  // node positions of the last spreading
+  ib::SpreadingBox spreading_;       // (21); knows the box the last step spread to
   m3::PhaseTracker phase_;
   double E_B_ = 0, K_v_ = 0, area0_ = 0, shear_modulus_ = 0, tau_m_ = 0;
   // IB delta (scene resolution.kernel, solver/ib/delta.hpp). Default Peskin's 4-point kernel, as
@@ -494,6 +495,7 @@ StepSplit3D time_steps3d(const Scene& scene, long warmup_steps, long steps) {
   const m3::MembraneTimings& m1 = sim.membrane_timings();
   r.fluid = per_step(t1.fluid, t0.fluid, steps);
   r.coupling = per_step(t1.coupling, t0.coupling, steps);
+  r.spreading = per_step(t1.spreading, t0.spreading, steps);
   r.viscosity = per_step(t1.viscosity, t0.viscosity, steps);
   r.elastic = per_step(m1.elastic_s, m0.elastic_s, steps);
   r.curvature = per_step(m1.curvature_s, m0.curvature_s, steps);

@@ -13,6 +13,7 @@ namespace capsule {
 struct StepSplit3D {
   long steps = 0;
   double total = 0, fluid = 0, coupling = 0, viscosity = 0, elastic = 0, curvature = 0, bending = 0;
+  double spreading = 0;  // the part of `coupling` that clears the force field and spreads (21)
   std::size_t vertices = 0;
   double nodes = 0;
 };

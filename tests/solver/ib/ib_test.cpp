@@ -10,6 +10,7 @@
 #include "solver/ib/delta.hpp"
 #include "solver/ib/interpolation.hpp"
 #include "solver/ib/membrane_update.hpp"
+#include "solver/ib/spreading_box.hpp"
 #include "solver/ib/viscosity_contrast.hpp"
 
 using namespace capsule::ib;
@@ -355,6 +356,66 @@ TEST_CASE("every kernel interpolates a linear field exactly and spreads adjointl
     clear_support<3>(g, X.data(), n, q, k);      // undoes exactly the nodes spread() touched
     for (std::size_t i = 0; i < g.size(); ++i) REQUIRE((p0[i] == 0.0 && p1[i] == 0.0 && p2[i] == 0.0));
   }
+}
+
+TEST_CASE("the spreading box spreads as spread<3> and clears exactly what it wrote, across the periodic seams", "[ib]") {
+  // Nodes placed across the periodic seams in x and z and near a wall in y: the box must wrap
+  // in x and z and clip in y. The force field is first filled with a marker everywhere, then
+  // cleared; the spreading is compared with spread<3> bitwise (the same code, the same order).
+  const Grid g{12, 10, 9};
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> around(-2.5, 2.5), y(0.5, 4.0);
+  const std::size_t n = 30;
+  std::vector<double> X(3 * n), F(3 * n);
+  for (std::size_t c = 0; c < n; ++c) {
+    X[3 * c] = around(rng);           // both sides of x = 0
+    X[3 * c + 1] = y(rng);            // near the wall y = 0: part of each stencil is dropped
+    X[3 * c + 2] = 9.0 + around(rng);  // both sides of z = nz
+    for (int d = 0; d < 3; ++d) F[3 * c + d] = std::cos(double(3 * c + d));
+  }
+  for (Kernel k : {Kernel::peskin4, Kernel::roma3, Kernel::linear2}) {
+    std::vector<double> a0(g.size(), 7.0), a1(g.size(), 7.0), a2(g.size(), 7.0);
+    std::vector<double> b0(g.size()), b1(g.size()), b2(g.size());
+    double* p[3] = {a0.data(), a1.data(), a2.data()};
+    double* q[3] = {b0.data(), b1.data(), b2.data()};
+    SpreadingBox box;
+    box.clear_last(g, p);  // before any spreading: the whole field
+    for (std::size_t i = 0; i < g.size(); ++i) REQUIRE((a0[i] == 0.0 && a1[i] == 0.0 && a2[i] == 0.0));
+    box.spread(g, X.data(), F.data(), n, p, k);
+    spread<3>(g, X.data(), F.data(), n, q, k);
+    REQUIRE(a0 == b0);
+    REQUIRE(a1 == b1);
+    REQUIRE(a2 == b2);
+    // Clearing zeroes every written node and is a box, not the whole field.
+    box.clear_last(g, p);
+    for (std::size_t i = 0; i < g.size(); ++i) REQUIRE((a0[i] == 0.0 && a1[i] == 0.0 && a2[i] == 0.0));
+    std::fill(a0.begin(), a0.end(), 7.0);
+    box.clear_last(g, p);
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < g.size(); ++i) {
+      if (b0[i] != 0.0 || b1[i] != 0.0) REQUIRE(a0[i] == 0.0);  // written nodes are cleared
+      kept += a0[i] == 7.0;
+    }
+    REQUIRE(kept > 0);  // and the clearing is a box, not the whole field
+    box.forget();
+    box.clear_last(g, p);
+    for (std::size_t i = 0; i < g.size(); ++i) REQUIRE(a0[i] == 0.0);  // after forget(): everything
+  }
+}
+
+TEST_CASE("the spreading box clears the whole field when the stencils span the periodic z axis", "[ib]") {
+  // Stencils that would wrap onto themselves in z: no box, the next clearing takes everything.
+  const Grid g{8, 8, 6};
+  std::vector<double> X{4.0, 4.0, 0.7, 4.0, 4.0, 3.9}, F{1.0, 2.0, 3.0, -1.0, 0.5, 0.25};
+  std::vector<double> a0(g.size(), 5.0), a1(g.size(), 5.0), a2(g.size(), 5.0);
+  double* p[3] = {a0.data(), a1.data(), a2.data()};
+  SpreadingBox box;
+  box.spread(g, X.data(), F.data(), 1, p, Kernel::peskin4);  // one node: a box
+  box.clear_last(g, p);
+  REQUIRE(a0[g.index(0, 0, 3)] == 5.0);  // far from the node in x and y: outside the box
+  box.spread(g, X.data(), F.data(), 2, p, Kernel::peskin4);  // z stencils 7 layers > nz = 6
+  box.clear_last(g, p);
+  for (std::size_t i = 0; i < g.size(); ++i) REQUIRE((a0[i] == 0.0 && a1[i] == 0.0 && a2[i] == 0.0));
 }
 
 TEST_CASE("membrane position update: forward Euler first order, Adams-Bashforth second order", "[ib]") {
