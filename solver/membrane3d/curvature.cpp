@@ -47,14 +47,16 @@ Fit fit_vertex(const Mesh& m, int p, const Vec3& n) {
     Atz += row * q.z();
   }
   // 5 neighbours: the square system (77) solved exactly; 6 or more: its least-squares
-  // solution. Both are the solution of the normal equations (LDL^T, Eigen).
-  Eigen::Matrix<double, 5, 1> s = AtA.ldlt().solve(Atz);
+  // solution. Both are the solution of the normal equations, symmetric positive definite for
+  // a ring that is not degenerate: Cholesky (Eigen LL^T, about half the time of LDL^T with its
+  // pivoting; the curvatures agree to round-off).
+  Eigen::Matrix<double, 5, 1> s = AtA.llt().solve(Atz);
   s.head<3>() /= h;
   const double a = s(0), b = s(1), c = s(2), d = s(3), e = s(4);
   const double g = 1.0 + d * d + e * e;
   Fit f;
   f.gaussian = (4.0 * a * c - b * b) / (g * g);                                // (78)
-  f.mean = -(a * (1.0 + e * e) + c * (1.0 + d * d) - b * d * e) / std::pow(g, 1.5);  // (79), corrected
+  f.mean = -(a * (1.0 + e * e) + c * (1.0 + d * d) - b * d * e) / (g * std::sqrt(g));  // (79), corrected
   f.normal = (R.transpose() * Vec3(-d, -e, 1.0)).normalized();                  // (80)
   return f;
 }
