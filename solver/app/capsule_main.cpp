@@ -54,8 +54,17 @@ int main(int argc, char** argv) {
     app.add_flag("--quick", quick, "fewer steps per measurement");
     app.add_option("--threads", threads, "largest thread count to try (0 = all cores)")
         ->check(capsule::cli::whole_number_at_least(0));
+    int a = 10, mesh_level = 4;
+    app.add_option("--a", a, "member3d: capsule radius in lattice nodes")->capture_default_str()->check(CLI::Range(3, 40));
+    app.add_option("--mesh-level", mesh_level, "member3d: icosphere level of the membrane")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 6));
     if (const int code = capsule::cli::parse_or_exit_code(app, argc - 1, argv + 1); code >= 0) return code;
-    return what == "member3d" ? capsule::bench_member3d(quick, threads) : capsule::lbm::bench_lbm(quick, threads);
+    if (what != "member3d" && (app.count("--a") > 0 || app.count("--mesh-level") > 0)) {
+      std::cerr << "capsule bench: --a and --mesh-level apply to member3d only\n";
+      return 2;
+    }
+    return what == "member3d" ? capsule::bench_member3d(quick, threads, a, mesh_level) : capsule::lbm::bench_lbm(quick, threads);
   }
   CLI::App app{"capsule: one capsule in shear flow (IB + MRT lattice Boltzmann + membrane FEM)\n"
                "  capsule SCENE.json -o MEMBER.h5   run one scene\n"
