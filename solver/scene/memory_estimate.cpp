@@ -15,7 +15,11 @@ MemoryEstimate estimate_memory(const Scene& s) {
   const double Q = s.dim == 3 ? 19 : 9;
   const lbm::PaddedRows rows(static_cast<std::size_t>(nx), static_cast<std::size_t>(ny * nz));
   MemoryEstimate m;
-  m.fluid = 2 * Q * static_cast<double>(rows.per_population()) * 8 + 7 * n * 8;  // f, f_next; force 3, velocity 3, density 1
+  // One padded array of populations (in-place streaming) at the scene's precision; force 3,
+  // velocity 3, density 1 in double. Measured peak RSS of the reference 3D member (single,
+  // 100 x 100 x 80, no restart point written): 133 MB against 131 MB from this and the base.
+  const double population_bytes = s.precision == "single" ? 4 : 8;
+  m.fluid = Q * static_cast<double>(rows.per_population()) * population_bytes + 7 * n * 8;
   const bool field = s.V != 1.0 || (s.dim == 3 && s.power_law_K > 0);
   if (field) m.fields += 17 * n;                        // nu, s_nu, marked
   if (s.V != 1.0) m.fields += 19 * n;                   // distance, signed distance, band and inside flags, flood fill

@@ -13,21 +13,36 @@ namespace {
 
 // Calibration (one thread, the 2-core development machine, docs/findings/performance.md "The fluid kernel before the rewrite"):
 // `capsule bench lbm`: D2Q9 175 MLUPS while the lattice fits in cache (160 x 120), 96 MLUPS
-// beyond (2048 x 2048); D3Q19 27.5 MLUPS.
-constexpr double kD2Q9CachedRate = 175e6, kD2Q9Rate = 96e6, kD3Q19Rate = 27.5e6;
+// beyond (2048 x 2048).
+constexpr double kD2Q9CachedRate = 175e6, kD2Q9Rate = 96e6;
 constexpr double kD2Q9CacheNodes = 250e3;  // ~ 2 x 9 x 8 B x nodes within a few MB of cache
 // 2D member at a = 10, 140 segments: membrane and coupling 1.9 s over 106 200 steps.
 constexpr double k2DPerSegment = 0.128e-6;
-// 3D, per vertex and step at a = 10, level 4 (2562 vertices): IB coupling with Peskin's
-// 4-point kernel 3.0 ms, elastic forces 0.5 ms, the curvature fit and bending 3.5 ms, power
-// law 1.4 ms; the SLS memory about half the elastic cost; the viscosity contrast's band
-// (6^3 nodes per vertex) about as much as the coupling.
-constexpr double k3DCouplingPerVertex = 1.17e-6, k3DElasticPerVertex = 0.20e-6, k3DSlsPerVertex = 0.10e-6,
-                 k3DCurvaturePerVertex = 1.37e-6, k3DPowerLawPerVertex = 0.55e-6, k3DContrastPerVertex = 1.2e-6;
+// 3D (docs/findings/performance.md "The membrane side of a 3D step" and "Finer members",
+// `capsule bench member3d`, one thread, 2026-12-04): the member's fluid (rho and u written only
+// near the membrane) at 160 MLUPS in single precision and 83 MLUPS in double on the 800 000
+// nodes of a = 10, and about 90 / 55 MLUPS on the 6 400 000 nodes of a = 20 (the machine's
+// speed varied by 20-30 % between runs); log-linear in the node count between the two and
+// constant beyond. Per vertex and step at a = 10, level 4
+// (2562 vertices): IB coupling with Peskin's 4-point kernel 0.59 ms, elastic forces 0.21 ms,
+// the curvature fit and bending 1.0 ms. Not re-measured since the kernel rewrite (from the
+// member timings of 2026-11-25, scaled as then): the power law 1.4 ms, the SLS memory about
+// half the elastic cost, the viscosity contrast's band (6^3 nodes per vertex) 3.0 ms.
+constexpr double kD3Q19Nodes[2] = {0.8e6, 6.4e6}, kD3Q19SingleRate[2] = {160e6, 90e6}, kD3Q19DoubleRate[2] = {83e6, 55e6};
+constexpr double k3DCouplingPerVertex = 0.23e-6, k3DElasticPerVertex = 0.085e-6, k3DSlsPerVertex = 0.04e-6,
+                 k3DCurvaturePerVertex = 0.40e-6, k3DPowerLawPerVertex = 0.55e-6, k3DContrastPerVertex = 1.2e-6;
 // The 2D viscosity contrast visits a 6 x 6 box per node: as much again as the membrane.
 constexpr double k2DContrastPerSegment = 0.15e-6;
-// Each further thread adds 0.8 of a core to the fluid (2 threads: 1.86x D2Q9, 1.79x D3Q19).
-constexpr double kThreadEfficiency = 0.8;
+// Each further thread adds 0.8 of a core to the fluid (2 threads: 1.86x D2Q9, 1.79x D3Q19)
+// and 0.4 of a core to the 3D membrane side (2 threads: 1.3-1.45x, bench member3d); the 2D
+// membrane (140 segments) runs on one thread.
+constexpr double kThreadEfficiency = 0.8, k3DMembraneThreadEfficiency = 0.4;
+
+double d3q19_rate(double nodes, bool single) {
+  const double* rate = single ? kD3Q19SingleRate : kD3Q19DoubleRate;
+  const double x = std::clamp(std::log(nodes / kD3Q19Nodes[0]) / std::log(kD3Q19Nodes[1] / kD3Q19Nodes[0]), 0.0, 1.0);
+  return rate[0] * std::pow(rate[1] / rate[0], x);
+}
 
 double expected_phase_kt(const PhaseSpec& p, bool recovery) {
   if (p.until == "time") return p.kt;
@@ -40,7 +55,8 @@ double expected_phase_kt(const PhaseSpec& p, bool recovery) {
 
 double CostEstimate::seconds_for_steps(double steps, int threads) const {
   const double t = std::max(1, threads);
-  return steps * (fluid_seconds_per_step / (1.0 + kThreadEfficiency * (t - 1.0)) + membrane_seconds_per_step);
+  return steps * (fluid_seconds_per_step / (1.0 + kThreadEfficiency * (t - 1.0)) +
+                  membrane_seconds_per_step / (1.0 + membrane_thread_efficiency * (t - 1.0)));
 }
 
 CostEstimate estimate_cost(const nlohmann::json& canonical_scene) {
@@ -62,7 +78,8 @@ CostEstimate estimate_cost(const nlohmann::json& canonical_scene) {
     c.fluid_seconds_per_step = nodes / (nodes <= kD2Q9CacheNodes ? kD2Q9CachedRate : kD2Q9Rate);
     c.membrane_seconds_per_step = scene.segments * (k2DPerSegment + (scene.V != 1.0 ? k2DContrastPerSegment : 0.0));
   } else {
-    c.fluid_seconds_per_step = nodes / kD3Q19Rate;
+    c.fluid_seconds_per_step = nodes / d3q19_rate(nodes, scene.precision == "single");
+    c.membrane_thread_efficiency = k3DMembraneThreadEfficiency;
     const double vertices = 10.0 * std::pow(4.0, scene.mesh_level) + 2.0;
     const double support = scene.kernel == "linear2" ? 8.0 : scene.kernel == "roma3" ? 27.0 : 64.0;
     double per_vertex = k3DCouplingPerVertex * support / 64.0 + k3DElasticPerVertex;

@@ -1,7 +1,9 @@
 #pragma once
 // A member's cost before it runs (docs/guide/running.md "Time and memory estimates"): lattice nodes, time
 // steps, and wall seconds on this kind of machine from a cost model calibrated by measurement:
-//   seconds = steps x (fluid nodes / fluid rate + membrane cost per step) / threads (fluid only)
+//   seconds = steps x (fluid nodes / fluid rate / fluid speed-up + membrane cost per step / membrane speed-up)
+// (the speed-ups with the thread count: 0.8 of a core per further thread for the fluid, 0.4
+// for the 3D membrane side, none for the 2D membrane)
 // with the fluid rate in lattice updates per second for the lattice (D2Q9 in or out of cache,
 // D3Q19), the membrane cost per vertex (3D) or segment (2D) and term (elasticity, SLS, bending
 // curvature fit, IB coupling by kernel width, viscosity contrast, power law), and the number
@@ -21,7 +23,8 @@ struct CostEstimate {
   double expected_kt = 0;     // the expected length (equal to kt_span for set durations)
   double steps_per_kt = 0;    // 1/k from Re, a and the tau the solver runs (choose_tau)
   double fluid_seconds_per_step = 0;     // one thread
-  double membrane_seconds_per_step = 0;  // membrane forces, IB coupling, viscosity fields
+  double membrane_seconds_per_step = 0;  // membrane forces, IB coupling, viscosity fields (one thread)
+  double membrane_thread_efficiency = 0; // what each further thread adds to the membrane side (0: serial)
   double memory_bytes = 0;    // the solver's estimate (solver/scene/memory_estimate.hpp)
   double steps() const { return kt_span * steps_per_kt; }
   double expected_steps() const { return expected_kt * steps_per_kt; }

@@ -121,7 +121,8 @@ TEST_CASE("study plan estimates seconds and memory per member and the campaign's
   s3["E_b"] = 0.05;
   const CostEstimate c3b = estimate_cost(capsule::Scene::from_json(s3, "t").to_json());
   CHECK(c3b.membrane_seconds_per_step > c3.membrane_seconds_per_step);
-  CHECK(c3.fluid_seconds_per_step > 100 * c2.fluid_seconds_per_step);
+  // 800 000 against 19 200 nodes (42x), the 3D kernel slower per node than the cached 2D one
+  CHECK(c3.fluid_seconds_per_step > 42 * c2.fluid_seconds_per_step);
   CHECK(c3.memory_bytes > 100e6);  // 100 x 100 x 80 D3Q19: ~300 MB
 
   SpeedCalibration k;
