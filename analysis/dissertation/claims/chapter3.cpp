@@ -9,13 +9,7 @@ namespace capsule::analysis::claims {
 // recovery model was less accurate, with R^2 as low as 0.92. Also, for high V or eta, the
 // response model only had R^2 > 0.97."
 ClaimResult claim_3_1(const DissertationResults& res) {
-  ClaimResult r = claim("3.1",
-                        "R^2 of the single exponential fits (85), (86) > 0.99, except recovery at large E_b (down to "
-                        "0.92) and response at large V or eta (> 0.97)",
-                        "ch3_ca, ch3_eb, ch3_v, ch3_eta (2d and 3d)",
-                        "every response fit R^2 > 0.99 (> 0.97 where V > 1 or eta > 1) and every recovery fit R^2 > "
-                        "0.99 (>= 0.92 where E_b > 0.05); a fit refused for R^2 < 0.5 fails. Agrees needs all four "
-                        "campaigns; one failing fit is enough to differ");
+  ClaimResult r = claim("3.1 R2");
   const char* names[] = {"ch3_ca", "ch3_eb", "ch3_v", "ch3_eta"};
   std::size_t checked = 0;
   std::vector<std::string> missing, failures;
@@ -74,17 +68,13 @@ ClaimResult claim_3_1(const DissertationResults& res) {
 ClaimResult claim_3_2_proportional(const DissertationResults& res, const std::string& case_name) {
   const double smallest = case_name == "2d" ? 0.05 : 0.0;
   const std::string range = smallest > 0 ? " over Ca >= " + num(smallest) + " (the text exempts very small Ca here)" : "";
-  ClaimResult r = claim("3.2", "k tau_r almost directly proportional to Ca (" + case_name + ")",
-                        "ch3_ca, case " + case_name,
-                        "exponent p of k tau_r ~ Ca^p (straight line in log-log) within [0.8, 1.2]" + range +
-                            "; >= 4 values of Ca");
-  const DissertationCampaign& c = res.campaign("ch3_ca");
-  if (!have_campaign(r, c)) return r;
+  auto [r, c] = open_claim(res, "3.2 proportional", {{"case", case_name}, {"range", range}});
+  if (!c) return r;
   const auto judged = [smallest](const DissertationMember& m) { return parameter(m, "Ca") >= smallest - 1e-12; };
-  const Series s = series(c, case_name, "Ca", "recovery.k_tau_r", judged);
+  const Series s = series(*c, case_name, "Ca", "recovery.k_tau_r", judged);
   if (!have_points(r, s, 4, "values of Ca" + (smallest > 0 ? " >= " + num(smallest) : "") + " with k tau_r")) return r;
   const LineFit f = fit_power(s.xs(), s.ys());
-  const Series exempt = series(c, case_name, "Ca", "recovery.k_tau_r", [&](const DissertationMember& m) { return !judged(m); });
+  const Series exempt = series(*c, case_name, "Ca", "recovery.k_tau_r", [&](const DissertationMember& m) { return !judged(m); });
   set(r, f.ok && f.slope >= 0.8 && f.slope <= 1.2,
       "p = " + num(f.slope) + " (log-log R^2 " + num(f.r_squared) + "); k tau_r: " + s.listing("Ca") +
           (exempt.points.empty() ? "" : " [exempt, very small Ca: " + exempt.listing("Ca") + "]"));
@@ -93,11 +83,9 @@ ClaimResult claim_3_2_proportional(const DissertationResults& res, const std::st
 
 // Sec. 3.2: "the normalized recovery time tau_r/tau_e is nearly constant for Ca >= 0.1".
 ClaimResult claim_3_2_constant(const DissertationResults& res, const std::string& case_name) {
-  ClaimResult r = claim("3.2", "tau_r/tau_e nearly constant for Ca >= 0.1 (" + case_name + ")", "ch3_ca, case " + case_name,
-                        "(max - min)/mean of tau_r/tau_e = k tau_r/(Ca V) over Ca >= 0.1 at most 0.2; >= 3 values of Ca");
-  const DissertationCampaign& c = res.campaign("ch3_ca");
-  if (!have_campaign(r, c)) return r;
-  Series s = series(c, case_name, "Ca", "recovery.k_tau_r", [](const DissertationMember& m) { return parameter(m, "Ca") >= 0.1 - 1e-12; });
+  auto [r, c] = open_claim(res, "3.2 constant", {{"case", case_name}});
+  if (!c) return r;
+  Series s = series(*c, case_name, "Ca", "recovery.k_tau_r", [](const DissertationMember& m) { return parameter(m, "Ca") >= 0.1 - 1e-12; });
   for (auto& p : s.points) p.y /= p.x * parameter(*p.member, "V");
   if (!have_points(r, s, 3, "values of Ca >= 0.1 with k tau_r")) return r;
   const double spread = relative_spread(s.ys());
@@ -119,51 +107,51 @@ Fall fall_of(const Series& s) {
   return f;
 }
 
+// The E_b series of a Sec. 3.3 claim: null, and r.measured says why, when the campaign or
+// three values are missing.
+std::optional<Series> e_b_series(ClaimResult& r, const DissertationCampaign* c, const std::string& case_name,
+                                 const std::string& column, const std::string& time) {
+  if (!c) return std::nullopt;
+  Series s = series(*c, case_name, "E_b", column);
+  if (!have_points(r, s, 3, "values of E_b with " + time)) return std::nullopt;
+  return s;
+}
+
 // Sec. 3.3: "A clear inverse relationship between k tau_r and E_b ... for both"; "the spherical
 // capsules' k tau_s has the same inverse relationship".
 ClaimResult claim_3_3_falls(const DissertationResults& res, const std::string& case_name, const std::string& column) {
   const std::string t = column == "recovery.k_tau_r" ? "k tau_r" : "k tau_s";
-  ClaimResult r = claim("3.3", t + " falls with E_b (" + case_name + ")", "ch3_eb, case " + case_name,
-                        t + " at the largest E_b at most 0.7 x its value at the smallest E_b, no step up by more than 5 %; "
-                            ">= 3 values of E_b");
-  const DissertationCampaign& c = res.campaign("ch3_eb");
-  if (!have_campaign(r, c)) return r;
-  const Series s = series(c, case_name, "E_b", column);
-  if (!have_points(r, s, 3, "values of E_b with " + t)) return r;
-  const Fall f = fall_of(s);
+  auto [r, c] = open_claim(res, "3.3 falls", {{"time", t}, {"case", case_name}});
+  const auto s = e_b_series(r, c, case_name, column, t);
+  if (!s) return r;
+  const Fall f = fall_of(*s);
   set(r, f.fall >= 0.3 && f.monotone,
-      "falls by " + num(100 * f.fall) + " %" + (f.monotone ? "" : ", not monotone") + "; " + t + ": " + s.listing("E_b"));
+      "falls by " + num(100 * f.fall) + " %" + (f.monotone ? "" : ", not monotone") + "; " + t + ": " + s->listing("E_b"));
   return r;
 }
 
 // Sec. 3.3: "k tau_s undergoes only a slight, almost linear decline as E_b rises for circular capsules".
 ClaimResult claim_3_3_slight(const DissertationResults& res) {
-  ClaimResult r = claim("3.3", "k tau_s falls only slightly with E_b in 2D", "ch3_eb, case 2d",
-                        "k tau_s at the largest E_b between 0.70 and 1.02 x its value at the smallest E_b (falls by "
-                        "less than 30 %); >= 3 values of E_b");
-  const DissertationCampaign& c = res.campaign("ch3_eb");
-  if (!have_campaign(r, c)) return r;
-  const Series s = series(c, "2d", "E_b", "response.k_tau_s");
-  if (!have_points(r, s, 3, "values of E_b with k tau_s")) return r;
-  const Fall f = fall_of(s);
+  auto [r, c] = open_claim(res, "3.3 slight");
+  const auto s = e_b_series(r, c, "2d", "response.k_tau_s", "k tau_s");
+  if (!s) return r;
+  const Fall f = fall_of(*s);
   // The text's Fig. 17 gives no E_b range, so name the range over which the fall stays slight.
-  const double first = s.points.front().y;
-  double slight_to = s.points.front().x;
-  for (const auto& p : s.points)
+  const double first = s->points.front().y;
+  double slight_to = s->points.front().x;
+  for (const auto& p : s->points)
     if (1.0 - p.y / first < 0.3) slight_to = p.x;
     else break;
   set(r, f.fall >= -0.02 && f.fall < 0.3,
-      "falls by " + num(100 * f.fall) + " %; by less than 30 % up to E_b " + num(slight_to) + "; k tau_s: " + s.listing("E_b"));
+      "falls by " + num(100 * f.fall) + " %; by less than 30 % up to E_b " + num(slight_to) + "; k tau_s: " + s->listing("E_b"));
   return r;
 }
 
 // Sec. 3.4: "Both k tau_s and k tau_r have approximately linear relationships with V".
 ClaimResult claim_3_4_linear(const DissertationResults& res, const std::string& case_name) {
-  ClaimResult r = claim("3.4", "k tau_s and k tau_r linear in V, rising (" + case_name + ")", "ch3_v, case " + case_name,
-                        "linear: R^2 of a straight-line fit >= 0.95 and slope > 0, for each time; >= 4 values of V");
-  const DissertationCampaign& c = res.campaign("ch3_v");
-  if (!have_campaign(r, c)) return r;
-  return judge_both_times(r, c, case_name, "V", 4, [](const Series& s, std::string& numbers) {
+  auto [r, c] = open_claim(res, "3.4 linear", {{"case", case_name}});
+  if (!c) return r;
+  return judge_both_times(r, *c, case_name, "V", 4, [](const Series& s, std::string& numbers) {
     const LineFit f = fit_line(s.xs(), s.ys());
     numbers = "slope " + num(f.slope) + ", R^2 " + num(f.r_squared);
     return f.ok && f.r_squared >= 0.95 && f.slope > 0;
@@ -172,12 +160,10 @@ ClaimResult claim_3_4_linear(const DissertationResults& res, const std::string& 
 
 // Sec. 3.4: "As V -> 0 ... the characteristic times tend toward k tau_r ~ k tau_s".
 ClaimResult claim_3_4_small_V(const DissertationResults& res, const std::string& case_name) {
-  ClaimResult r = claim("3.4", "k tau_r ~ k tau_s as V -> 0 (" + case_name + ")", "ch3_v, case " + case_name,
-                        "k tau_r / k tau_s at the smallest V of the campaign within [0.75, 1.33]");
-  const DissertationCampaign& c = res.campaign("ch3_v");
-  if (!have_campaign(r, c)) return r;
-  const Series s = series(c, case_name, "V", "response.k_tau_s");
-  const Series q = series(c, case_name, "V", "recovery.k_tau_r");
+  auto [r, c] = open_claim(res, "3.4 small V", {{"case", case_name}});
+  if (!c) return r;
+  const Series s = series(*c, case_name, "V", "response.k_tau_s");
+  const Series q = series(*c, case_name, "V", "recovery.k_tau_r");
   if (!have_points(r, s, 1, "values of V with k tau_s") || !have_points(r, q, 1, "values of V with k tau_r")) return r;
   if (s.points.front().x != q.points.front().x) {
     r.measured = "cannot tell (members missing): the smallest V lacks one of the two times (k tau_s from V " +
@@ -195,11 +181,9 @@ ClaimResult claim_3_4_small_V(const DissertationResults& res, const std::string&
 
 // Sec. 3.5: "both k tau_s and k tau_r were virtually independent of ... eta for circular capsules".
 ClaimResult claim_3_5_2d(const DissertationResults& res) {
-  ClaimResult r = claim("3.5", "in 2D both times nearly independent of eta", "ch3_eta, case 2d",
-                        "(max - min)/mean over the eta sweep at most 0.1, for each time; >= 3 values of eta");
-  const DissertationCampaign& c = res.campaign("ch3_eta");
-  if (!have_campaign(r, c)) return r;
-  return judge_both_times(r, c, "2d", "eta", 3, [](const Series& s, std::string& numbers) {
+  auto [r, c] = open_claim(res, "3.5 2d");
+  if (!c) return r;
+  return judge_both_times(r, *c, "2d", "eta", 3, [](const Series& s, std::string& numbers) {
     const double spread = relative_spread(s.ys());
     numbers = "spread " + num(spread);
     return spread <= 0.1;
@@ -208,12 +192,9 @@ ClaimResult claim_3_5_2d(const DissertationResults& res) {
 
 // Sec. 3.5: "in three dimensions, the characteristic times displayed a clear linear dependence on eta".
 ClaimResult claim_3_5_3d(const DissertationResults& res) {
-  ClaimResult r = claim("3.5", "in 3D both times linear in eta", "ch3_eta, case 3d",
-                        "linear: R^2 of a straight-line fit >= 0.95, slope > 0 and a rise of at least 20 % over the "
-                        "sweep, for each time; >= 4 values of eta");
-  const DissertationCampaign& c = res.campaign("ch3_eta");
-  if (!have_campaign(r, c)) return r;
-  return judge_both_times(r, c, "3d", "eta", 4, [](const Series& s, std::string& numbers) {
+  auto [r, c] = open_claim(res, "3.5 3d");
+  if (!c) return r;
+  return judge_both_times(r, *c, "3d", "eta", 4, [](const Series& s, std::string& numbers) {
     const LineFit f = fit_line(s.xs(), s.ys());
     const double rise = s.points.back().y / s.points.front().y - 1.0;
     numbers = "slope " + num(f.slope) + ", R^2 " + num(f.r_squared) + ", rise " + num(100 * rise) + " %";

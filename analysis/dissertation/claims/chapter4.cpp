@@ -16,16 +16,13 @@ std::string order_band(int order) {
 }
 
 // Medians of two fitted times in the bands of O(10^o1) and O(10^o2).
-ClaimResult claim_orders(const DissertationResults& res, const std::string& section, const std::string& statement,
-                         const std::string& campaign, const std::string& fit, int o1, int o2, const Skip& skip) {
-  ClaimResult r = claim(section, statement, campaign,
-                        "median k tau_R1 in " + order_band(o1) + " and median k tau_R2 in " + order_band(o2) +
-                            " (round(log10) = " + std::to_string(o1) + " and " + std::to_string(o2) +
-                            ") over every member with the fit; >= 3 members");
-  const DissertationCampaign& c = res.campaign(campaign);
-  if (!have_campaign(r, c)) return r;
-  const Series s1 = series(c, "", "Ca", fit + ".k_tau_R1", {}, skip);
-  const Series s2 = series(c, "", "Ca", fit + ".k_tau_R2", {}, skip);
+ClaimResult claim_orders(const DissertationResults& res, const std::string& key, const std::string& fit, int o1, int o2,
+                         const Skip& skip) {
+  auto [r, c] = open_claim(res, key, {{"band1", order_band(o1)}, {"band2", order_band(o2)},
+                                      {"order1", std::to_string(o1)}, {"order2", std::to_string(o2)}});
+  if (!c) return r;
+  const Series s1 = series(*c, "", "Ca", fit + ".k_tau_R1", {}, skip);
+  const Series s2 = series(*c, "", "Ca", fit + ".k_tau_R2", {}, skip);
   if (!have_points(r, s1, 3, "members with k tau_R1") || !have_points(r, s2, 3, "members with k tau_R2")) return r;
   const auto y1 = s1.ys(), y2 = s2.ys();
   const double m1 = median(y1), m2 = median(y2);
@@ -51,14 +48,11 @@ void exponent_part(Parts& parts, const DissertationCampaign& c, const std::strin
 // Sec. 4.1.1: "for eta > 0, one might make the approximation k tau_R1 ~ Ca eta";
 // "a significant linear relationship prevailed between k tau_R1 and eta".
 ClaimResult claim_4_1_1_R1(const DissertationResults& res) {
-  ClaimResult r = claim("4.1.1", "k tau_R1 ~ Ca eta (tank-treading 2D biconcave)", "ch4_2d_tt, cases Ca and eta",
-                        "exponent of k tau_R1 ~ Ca^p within [0.7, 1.3]; k tau_R1 against eta linear: R^2 of a "
-                        "straight-line fit >= 0.9 and slope > 0; >= 3 values each");
-  const DissertationCampaign& c = res.campaign("ch4_2d_tt");
-  if (!have_campaign(r, c)) return r;
+  auto [r, c] = open_claim(res, "4.1.1 R1");
+  if (!c) return r;
   Parts parts;
-  exponent_part(parts, c, "Ca", "Ca", "two_phase.k_tau_R1", 0.7, 1.3, missed_stop_in(res));
-  const Series s = series(c, "eta", "eta", "two_phase.k_tau_R1", {}, missed_stop_in(res));
+  exponent_part(parts, *c, "Ca", "Ca", "two_phase.k_tau_R1", 0.7, 1.3, missed_stop_in(res));
+  const Series s = series(*c, "eta", "eta", "two_phase.k_tau_R1", {}, missed_stop_in(res));
   if (parts.enough(s, 3, "eta", "eta", "two_phase.k_tau_R1")) {
     const LineFit f = fit_line(s.xs(), s.ys());
     parts.add(f.ok && f.r_squared >= 0.9 && f.slope > 0,
@@ -69,15 +63,11 @@ ClaimResult claim_4_1_1_R1(const DissertationResults& res) {
 
 // Sec. 4.1.1: "A comparable approximation of the second recovery phase would be k tau_R2 ~ Ca V / E_b".
 ClaimResult claim_4_1_1_R2(const DissertationResults& res) {
-  ClaimResult r = claim("4.1.1", "k tau_R2 ~ Ca V / E_b (tank-treading 2D biconcave)",
-                        "ch4_2d_tt, cases Ca, V and E_b",
-                        "exponents of k tau_R2 against Ca and V within [0.7, 1.3], against E_b (E_b > 0) within "
-                        "[-1.3, -0.7]; >= 3 values each");
-  const DissertationCampaign& c = res.campaign("ch4_2d_tt");
-  if (!have_campaign(r, c)) return r;
+  auto [r, c] = open_claim(res, "4.1.1 R2");
+  if (!c) return r;
   Parts parts;
-  for (const char* x : {"Ca", "V"}) exponent_part(parts, c, x, x, "two_phase.k_tau_R2", 0.7, 1.3, missed_stop_in(res));
-  exponent_part(parts, c, "E_b", "E_b", "two_phase.k_tau_R2", -1.3, -0.7, missed_stop_in(res),
+  for (const char* x : {"Ca", "V"}) exponent_part(parts, *c, x, x, "two_phase.k_tau_R2", 0.7, 1.3, missed_stop_in(res));
+  exponent_part(parts, *c, "E_b", "E_b", "two_phase.k_tau_R2", -1.3, -0.7, missed_stop_in(res),
                 [](const DissertationMember& m) { return parameter(m, "E_b") > 0.0; });
   return parts.finish(r);
 }
@@ -85,12 +75,9 @@ ClaimResult claim_4_1_1_R2(const DissertationResults& res) {
 // Sec. 4.1.1: with E_b = 0 "upon reaching D_min, the capsule underwent no further significant
 // change in shape; thus D_min ~ D_inf ... this shape is not recovered".
 ClaimResult claim_4_1_1_no_bending(const DissertationResults& res) {
-  ClaimResult r = claim("4.1.1", "no recovery of biconcavity at E_b = 0 (Fig. 23)", "ch4_2d_tt, case no_bending",
-                        "recovered share (D_end - D_min)/(0.812 - D_min) of the recovery at most 0.2, D_min the least "
-                        "D_xy after the stop, D_end the last, 0.812 the undeformed D_xy");
-  const DissertationCampaign& c = res.campaign("ch4_2d_tt");
-  if (!have_campaign(r, c)) return r;
-  const auto members = c.in_case("no_bending");
+  auto [r, c] = open_claim(res, "4.1.1 no bending");
+  if (!c) return r;
+  const auto members = c->in_case("no_bending");
   if (members.empty()) {
     r.measured = "cannot tell (members missing): no member of case no_bending in fits.json";
     return r;
@@ -125,16 +112,12 @@ ClaimResult claim_4_1_1_no_bending(const DissertationResults& res) {
 
 // Sec. 4.1.2: "this model fit the results with a coefficient of correlation R^2 > 0.97".
 ClaimResult claim_4_1_2_r2(const DissertationResults& res) {
-  ClaimResult r = claim("4.1.2", "tumbling recovery fitted by (90) with R^2 > 0.97",
-                        "ch4_2d_tumble (every member stopped at theta = -pi/3)",
-                        "every double exponential (90) fit R^2 > 0.97 (a fit refused for R^2 < 0.5, or whose times "
-                        "the recovery does not determine, fails); >= 3 fits");
-  const DissertationCampaign& c = res.campaign("ch4_2d_tumble");
-  if (!have_campaign(r, c)) return r;
+  auto [r, c] = open_claim(res, "4.1.2 R2");
+  if (!c) return r;
   std::size_t n = 0;
   double lowest = 1.0;
   std::vector<std::string> failures, gaps;
-  for (const DissertationMember* m : c.in_case("")) {
+  for (const DissertationMember* m : c->in_case("")) {
     const auto it = m->fits.find("double_exponential");
     if (it == m->fits.end()) continue;
     if (const std::string outside = outside_tumbling_ensemble(res, *m); !outside.empty()) {
@@ -170,13 +153,10 @@ ClaimResult claim_4_1_2_r2(const DissertationResults& res) {
 // Sec. 4.1.2: Fig. 38's capsule (Ca 0.4, E_b 0.05, V 5, eta 0, stopped at theta = -pi/3):
 // "the capsule's first recover time, tau_R1 = 0.283".
 ClaimResult claim_4_1_2_fig38(const DissertationResults& res) {
-  ClaimResult r = claim("4.1.2", "k tau_R1 = 0.283 for Fig. 38's capsule (Ca 0.4, E_b 0.05, V 5, eta 0)",
-                        "ch4_2d_tumble, base member (not case theta_pi_6)",
-                        "|k tau_R1 of (90) - 0.283| at most 20 % of 0.283 (the text gives no interval)");
-  const DissertationCampaign& c = res.campaign("ch4_2d_tumble");
-  if (!have_campaign(r, c)) return r;
+  auto [r, c] = open_claim(res, "4.1.2 Fig. 38");
+  if (!c) return r;
   const DissertationMember* base = nullptr;
-  for (const DissertationMember* m : c.in_case(""))
+  for (const DissertationMember* m : c->in_case(""))
     if (m->case_name != "theta_pi_6" && std::abs(parameter(*m, "Ca") - 0.4) < 1e-9 &&
         std::abs(parameter(*m, "E_b") - 0.05) < 1e-9 && std::abs(parameter(*m, "V") - 5) < 1e-9 &&
         parameter(*m, "eta") == 0.0)
@@ -285,20 +265,15 @@ std::vector<Recovery3d> recoveries(const DissertationResults& res, const Dissert
   return out;
 }
 
-const char* k_memory_rule =
-    "shape memory: the mean phase distance of the tracked elements from their rest positions (beta modulo pi) falls "
-    "from the stop to the end by >= 30 % and >= 0.05 rad; none: it falls by < 20 % or < 0.05 rad";
-
 // Sec. 4.2: every ch4_3d_cases member whose case name starts with `prefix` must satisfy `holds`
 // (nullopt: the rule cannot judge that member); the verdict lists each member's figures, or says
 // which members are missing.
 template <class Holds>
-void judge_every(ClaimResult& r, const DissertationResults& res, const std::string& prefix, const std::string& none,
-                 Holds holds) {
-  const DissertationCampaign& c = res.campaign("ch4_3d_cases");
-  if (!have_campaign(r, c)) return;
+void judge_every(ClaimResult& r, const DissertationResults& res, const DissertationCampaign* c, const std::string& prefix,
+                 const std::string& none, Holds holds) {
+  if (!c) return;
   std::string why;
-  const auto rec = recoveries(res, c, prefix, why);
+  const auto rec = recoveries(res, *c, prefix, why);
   if (rec.empty()) {
     r.measured = "cannot tell (members missing): " + (why.empty() ? none : why);
     return;
@@ -321,12 +296,8 @@ void judge_every(ClaimResult& r, const DissertationResults& res, const std::stri
 // Sec. 4.2.2: case A: "a clear, if incomplete, recovery of the initial biconcave shape has
 // occurred ... consistent with the capsule displaying shape memory".
 ClaimResult claim_4_2_A(const DissertationResults& res) {
-  ClaimResult r = claim("4.2", "case A (biconcave reference, constant c0) recovers biconcavity partly, with shape memory",
-                        "ch4_3d_cases, cases A_c0_-2.09, A_c0_-1, A_c0_0",
-                        std::string("every A member: recovered share (D_stop - D_end)/(D_stop - 0.51) >= 0.3 with D_end "
-                                    "> 0.52 (partial), and shape memory (") + k_memory_rule +
-                            "); a member stopped with D_stop within 0.03 of 0.51 has no share and is not judged");
-  judge_every(r, res, "A_", "no case A member", [](const Recovery3d& x) -> std::optional<bool> {
+  auto [r, c] = open_claim(res, "4.2 A");
+  judge_every(r, res, c, "A_", "no case A member", [](const Recovery3d& x) -> std::optional<bool> {
     if (!x.share_defined()) return std::nullopt;
     return x.share >= 0.3 && x.D_end > k_D_biconcave_3d + 0.01 && x.memory();
   });
@@ -336,12 +307,8 @@ ClaimResult claim_4_2_A(const DissertationResults& res) {
 // Sec. 4.2.3: case B (c0 = 2 kappa): "D_xy declines monotonically, well past the value 0.51 ...
 // the initial shape is not a stable equilibrium ... the capsule displays no indication of shape memory".
 ClaimResult claim_4_2_B(const DissertationResults& res) {
-  ClaimResult r = claim("4.2", "case B (c0 = 2 kappa) does not recover its shape (passes the undeformed D_xy) and has no shape memory",
-                        "ch4_3d_cases, case B",
-                        std::string("every B member: D_end < 0.50 (more than 0.01 past the undeformed 0.51) or recovered "
-                                    "share < 0.3, and no shape memory (") + k_memory_rule +
-                            "); the share is not defined for D_stop within 0.03 of 0.51");
-  judge_every(r, res, "B", "no case B member", [](const Recovery3d& x) -> std::optional<bool> {
+  auto [r, c] = open_claim(res, "4.2 B");
+  judge_every(r, res, c, "B", "no case B member", [](const Recovery3d& x) -> std::optional<bool> {
     if (x.D_end < k_D_biconcave_3d - 0.01) return x.no_memory();
     if (!x.share_defined()) return std::nullopt;
     return x.share < 0.3 && x.no_memory();
@@ -352,16 +319,11 @@ ClaimResult claim_4_2_B(const DissertationResults& res) {
 // Sec. 4.2.4: case C (spherical reference): "gets closer to recovering its initial shape than
 // any capsule in Case A ... beta values ... remained basically constant".
 ClaimResult claim_4_2_C(const DissertationResults& res) {
-  ClaimResult r = claim("4.2", "case C (spherical reference) recovers more completely than A, without shape memory",
-                        "ch4_3d_cases, cases C and A_*",
-                        std::string("every C member ends nearer the undeformed D_xy than every case A member with the "
-                                    "same E_b: |D_end - 0.51| smaller (an overshoot past 0.51 is a distance too, the "
-                                    "text's case B behaviour), and no shape memory (") + k_memory_rule + ")");
-  const DissertationCampaign& c = res.campaign("ch4_3d_cases");
-  if (!have_campaign(r, c)) return r;
+  auto [r, c] = open_claim(res, "4.2 C");
+  if (!c) return r;
   std::string why;
-  const auto rc = recoveries(res, c, "C", why);
-  const auto ra = recoveries(res, c, "A_", why);
+  const auto rc = recoveries(res, *c, "C", why);
+  const auto ra = recoveries(res, *c, "A_", why);
   const auto distance = [](const Recovery3d& x) { return std::abs(x.D_end - k_D_biconcave_3d); };
   Parts parts;
   for (const auto& x : rc) {

@@ -8,13 +8,9 @@ namespace capsule::analysis::claims {
 // Sec. 5.1.2: "the derived relationship between V and tau_r matches very well. The results for
 // tau_s are still acceptable, but noticeably poorer" (Figs. 55, 56).
 ClaimResult claim_5_1_2(const DissertationResults& res, const std::string& campaign, double V_base, const std::string& figure) {
-  ClaimResult r = claim("5.1.2", "V* = V + (a/b) eta (98) reproduces k tau_r well and k tau_s less well (" + figure + ")",
-                        campaign + " (members with eta > 0 at V = " + num(V_base) + " against the eta = 0 members)",
-                        "mean |k tau - line(V*)| / k tau over the eta > 0 members at V = " + num(V_base) +
-                            ", line = straight-line fit of k tau against V of the eta = 0 members, a/b from the "
-                            "campaign's bilinear fit: at most 0.1 for k tau_r and below that of k tau_s");
-  const DissertationCampaign& c = res.campaign(campaign);
-  if (!have_campaign(r, c)) return r;
+  auto [r, found] = open_claim(res, "5.1.2 V*", {{"figure", figure}, {"campaign", campaign}, {"V", num(V_base)}});
+  if (!found) return r;
+  const DissertationCampaign& c = *found;
   const auto bilinear = read_bilinear_entries(campaign, c.fits);
   double err[2] = {k_nan, k_nan};
   std::string text;
@@ -103,16 +99,9 @@ std::optional<ResolutionShift> resolution_shift(const DissertationResults& res, 
 }
 
 ClaimResult claim_5_2_pairs(const DissertationResults& res, bool initial) {
-  const char* tested = "ch5_powerlaw, case K (n = 0.64) against the Kelvin-Voigt members (cases kv, kv_physical) of equal "
-                       "physical surface viscosity (eta = K, physical reading of (63))";
-  ClaimResult r = initial ? claim("5.2.1", "power law and Kelvin-Voigt give nearly the same initial deformation for mu_s = 1000 K pairs (Figs. 62-63)",
-                                  tested,
-                                  "|D_xy(kt 1) of the power law - that of Kelvin-Voigt| at most 10 % of the latter, "
-                                  "for every pair")
-                          : claim("5.2.1", "the power law gives a slightly smaller steady D_xy than Kelvin-Voigt (Figs. 62-63)",
-                                  tested, "0 < (D_kv - D_power)/D_kv <= 0.2 at the end of the shear, for every pair");
-  const DissertationCampaign& c = res.campaign("ch5_powerlaw");
-  if (!have_campaign(r, c)) return r;
+  auto [r, found] = open_claim(res, initial ? "5.2.1 initial" : "5.2.1 steady");
+  if (!found) return r;
+  const DissertationCampaign& c = *found;
   std::string why;
   const auto power = shear_members(res, c, "K", why);
   auto kv = shear_members(res, c, "kv", why);
@@ -176,8 +165,7 @@ ClaimResult claim_5_2_pairs(const DissertationResults& res, bool initial) {
 }
 
 ClaimResult claim_5_2_mesh(const DissertationResults& res) {
-  return judge_spread(res, {"5.2", "the power-law model is independent of the mesh (Fig. 59)", "ch5_powerlaw", "mesh",
-                            "/resolution/mesh_level", "level", "the mesh levels", 0.05, 3});
+  return judge_spread(res, {"5.2 mesh", "mesh", "/resolution/mesh_level", "level", 0.05, 3});
 }
 
 // The factor max / min of gamma_max over the last 2T of the shear (one full period of
@@ -207,13 +195,9 @@ double gamma_factor(const io::MemberData& d, const std::string& slug, std::strin
 // decide it: here, when the factor moves between the two finest levels of its ladder by more
 // than its distance to the nearer edge of [5.5, 8.5].
 ClaimResult claim_5_2_gamma(const DissertationResults& res) {
-  ClaimResult r = claim("5.2.2", "the maximum surface shear rate varies by a factor 6-8 over an oscillation period (Fig. 67)",
-                        "ch5_oscillatory, power-law cases",
-                        "max / min of gamma_max over the last 2T of the shear (one full period of sin(pi t/T)) within "
-                        "[5.5, 8.5], for every power-law member; cannot tell when a factor moves from the next coarser "
-                        "level by more than its distance to the nearer edge");
-  const DissertationCampaign& c = res.campaign("ch5_oscillatory");
-  if (!have_campaign(r, c)) return r;
+  auto [r, found] = open_claim(res, "5.2.2 gamma");
+  if (!found) return r;
+  const DissertationCampaign& c = *found;
   constexpr double lo_edge = 5.5, hi_edge = 8.5;
   bool ok = true, judged = false;
   std::string text, why, unconverged;

@@ -19,8 +19,8 @@ ClaimResult claim_3_4_linear(const DissertationResults& res, const std::string& 
 ClaimResult claim_3_4_small_V(const DissertationResults& res, const std::string& case_name);
 ClaimResult claim_3_5_2d(const DissertationResults& res);
 ClaimResult claim_3_5_3d(const DissertationResults& res);
-ClaimResult claim_orders(const DissertationResults& res, const std::string& section, const std::string& statement,
-                         const std::string& campaign, const std::string& fit, int o1, int o2, const Skip& skip);
+ClaimResult claim_orders(const DissertationResults& res, const std::string& key, const std::string& fit, int o1, int o2,
+                         const Skip& skip);
 ClaimResult claim_4_1_1_R1(const DissertationResults& res);
 ClaimResult claim_4_1_1_R2(const DissertationResults& res);
 ClaimResult claim_4_1_1_no_bending(const DissertationResults& res);

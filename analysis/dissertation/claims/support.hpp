@@ -1,12 +1,13 @@
 #pragma once
-// What every claim of the dissertation comparison is built from: a claim's header, the members
-// of a case as a series of (parameter, fitted time), the checks that turn missing members into
-// "cannot tell", and the members whose shear stop never came. Each chapter's claims are in
+// What every claim of the dissertation comparison is built from: a claim's text (claims.md) and
+// campaign, the members of a case as a series of (parameter, fitted time), the checks that turn
+// missing members into "cannot tell", and the members whose shear stop never came. Each chapter's claims are in
 // chapter2.cpp ... chapter5.cpp beside this file, declared in chapters.hpp.
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -16,6 +17,7 @@
 #include "analysis/fit/resolution_ladder.hpp"
 #include "analysis/report/scene_parameter.hpp"
 #include "analysis/dissertation/table2_compare.hpp"
+#include "analysis/dissertation/claim_texts.hpp"
 #include "analysis/dissertation/claims.hpp"
 
 namespace capsule::analysis::claims {
@@ -83,12 +85,15 @@ inline Series series(const DissertationCampaign& c, const std::string& case_name
   return s;
 }
 
-inline ClaimResult claim(std::string section, std::string statement, std::string campaign, std::string criterion) {
+// The claim `key` of analysis/dissertation/claims.md, its {placeholders} filled from `fills`.
+using Fills = std::map<std::string, std::string>;
+inline ClaimResult claim(const std::string& key, const Fills& fills = {}) {
+  const ClaimText& t = claim_text(key);
   ClaimResult r;
-  r.section = std::move(section);
-  r.statement = std::move(statement);
-  r.campaign = std::move(campaign);
-  r.criterion = std::move(criterion);
+  r.section = fill_placeholders(t.section, fills, key);
+  r.statement = fill_placeholders(t.statement, fills, key);
+  r.campaign = fill_placeholders(t.tested_by, fills, key);
+  r.criterion = fill_placeholders(t.criterion, fills, key);
   return r;
 }
 
@@ -104,6 +109,20 @@ inline bool have_campaign(ClaimResult& r, const DissertationCampaign& c) {
   if (c.found) return true;
   r.measured = "cannot tell: " + c.missing;
   return false;
+}
+
+// The claim `key` (claim()) and the campaign its "Tested by" names first; campaign is null, and
+// r.measured says why, when that campaign was not shipped.
+struct OpenClaim {
+  ClaimResult r;
+  const DissertationCampaign* campaign = nullptr;
+};
+inline OpenClaim open_claim(const DissertationResults& res, const std::string& key, const Fills& fills = {}) {
+  OpenClaim o{claim(key, fills)};
+  const std::string& tested_by = o.r.campaign;
+  const DissertationCampaign& c = res.campaign(tested_by.substr(0, tested_by.find_first_of(" ,(")));
+  if (have_campaign(o.r, c)) o.campaign = &c;
+  return o;
 }
 
 // False (and r.measured says why) when the series has fewer than n points.
@@ -315,20 +334,16 @@ inline std::vector<ShearMember> shear_members(const DissertationResults& res, co
 // values (at least `needed` members): mesh independence (Figs. 10, 59), G independence (Fig. 12).
 // `over` names the values in the criterion ("the mesh levels").
 struct SpreadRule {
-  std::string section, statement, campaign, case_name, key_pointer, key_label, over;
+  std::string key, case_name, key_pointer, key_label;  // key: the claim in claims.md
   double bound = 0.0;
   std::size_t needed = 3;
 };
 inline ClaimResult judge_spread(const DissertationResults& res, const SpreadRule& rule) {
-  ClaimResult r = claim(rule.section, rule.statement, rule.campaign + ", case " + rule.case_name,
-                        "(max - min)/mean of D_xy at the end of the shear over " + rule.over + " at most " +
-                            num(rule.bound) + "; >= " + std::to_string(rule.needed) +
-                            (rule.key_label == "level" ? " levels" : " values"));
+  auto [r, c] = open_claim(res, rule.key, {{"bound", num(rule.bound)}, {"needed", std::to_string(rule.needed)}});
+  if (!c) return r;
   const auto& key_label = rule.key_label;
-  const DissertationCampaign& c = res.campaign(rule.campaign);
-  if (!have_campaign(r, c)) return r;
   std::string why;
-  const auto ms = shear_members(res, c, rule.case_name, why);
+  const auto ms = shear_members(res, *c, rule.case_name, why);
   if (ms.size() < rule.needed) {
     r.measured = "cannot tell (members missing): " + std::to_string(ms.size()) + " " + key_label +
                  " values with a member file, need " + std::to_string(rule.needed) +

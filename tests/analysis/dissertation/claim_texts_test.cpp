@@ -1,0 +1,87 @@
+// What each claim says is a Markdown file (analysis/dissertation/claims.md, embedded at build
+// time): every "## " claim has its four lines, a malformed file is refused with its line, every
+// {placeholder} must be filled, and every claim of the file is one the code judges.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "analysis/dissertation/claim_texts.hpp"
+#include "analysis/dissertation/claims.hpp"
+#include "analysis/dissertation/results.hpp"
+
+using namespace capsule::analysis;
+
+namespace {
+std::vector<std::string> headings_of_claims_md() {
+  std::ifstream in(std::string(CAPSULE_SOURCE_DIR) + "/analysis/dissertation/claims.md");
+  std::vector<std::string> keys;
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("## ", 0) == 0) keys.push_back(line.substr(3));
+  return keys;
+}
+}  // namespace
+
+TEST_CASE("every claim in claims.md has a section, a statement, what tests it and a criterion", "[analysis][dissertation]") {
+  const auto keys = headings_of_claims_md();
+  REQUIRE(keys.size() == 26);  // the rules of claims/chapter*.cpp: a new claim updates this count
+  for (const auto& key : keys) {
+    INFO(key);
+    const ClaimText& t = claim_text(key);  // the embedded copy is the file's
+    CHECK(t.key == key);
+    CHECK(key.rfind(t.section, 0) == 0);  // the key starts with the section
+    CHECK(t.statement.size() > 20);
+    CHECK((t.tested_by.rfind("ch", 0) == 0 || t.tested_by.rfind("{campaign}", 0) == 0));  // a campaign first
+    CHECK(t.criterion.size() > 40);
+  }
+  CHECK_THROWS_AS(claim_text("no such claim"), std::logic_error);
+}
+
+TEST_CASE("a claims text with a line missing, out of order or given twice is refused by line", "[analysis][dissertation]") {
+  const std::string one = "## A\n\nSection: 1\nStatement: s\nTested by: ch_x\nCriterion: c\n";
+  const auto parsed = parse_claim_texts("# title\n\nintro {x}\n\n" + one + "\n## B\nSection: 2\nStatement: t\nTested by: ch_y, case z\nCriterion: d {n}\n");
+  REQUIRE(parsed.size() == 2);
+  CHECK(parsed[0].key == "A");
+  CHECK(parsed[1].tested_by == "ch_y, case z");
+  CHECK(parsed[1].criterion == "d {n}");
+  CHECK_THROWS_WITH(parse_claim_texts("## A\nSection: 1\nStatement: s\nCriterion: c\n"),
+                    Catch::Contains("line 4") && Catch::Contains("Tested by: "));
+  CHECK_THROWS_WITH(parse_claim_texts("## A\nSection: 1\nStatement: s\n\n## B\n"), Catch::Contains("line 5") && Catch::Contains("lacks"));
+  CHECK_THROWS_WITH(parse_claim_texts(one + one), Catch::Contains("given twice"));
+  CHECK_THROWS_WITH(parse_claim_texts(one + "stray\n"), Catch::Contains("line 7"));
+}
+
+TEST_CASE("claim placeholders are filled, and a missing value is an error naming it", "[analysis][dissertation]") {
+  CHECK(fill_placeholders("k tau_r ({case}) over {n} values", {{"case", "2d"}, {"n", "4"}, {"unused", "x"}}, "k") ==
+        "k tau_r (2d) over 4 values");
+  CHECK(fill_placeholders("no placeholder", {}, "k") == "no placeholder");
+  CHECK_THROWS_WITH(fill_placeholders("over {n} values", {}, "3.2 x"), Catch::Contains("3.2 x") && Catch::Contains("{n}"));
+  CHECK_THROWS_WITH(fill_placeholders("open {n", {{"n", "1"}}, "k"), Catch::Contains("unclosed"));
+}
+
+TEST_CASE("every claim of claims.md is judged, with every placeholder filled", "[analysis][dissertation]") {
+  // From an empty results folder every claim says "cannot tell", but each has read its text:
+  // an unknown key or an unfilled placeholder would throw here.
+  const auto dir = std::filesystem::temp_directory_path() / "capsule_claim_texts_empty";
+  const auto claims = evaluate_claims(DissertationResults(dir.string()));
+  for (const auto& c : claims) {
+    INFO(c.statement);
+    CHECK(c.statement.find('{') == std::string::npos);
+    CHECK(c.criterion.find('{') == std::string::npos);
+    CHECK(c.measured.rfind("cannot tell", 0) == 0);
+  }
+  // And the code judges every claim of the file: each key's statement (up to its first
+  // placeholder) and criterion (likewise) open some judged claim of its section.
+  for (const auto& key : headings_of_claims_md()) {
+    INFO(key);
+    const ClaimText& t = claim_text(key);
+    const std::string statement = t.statement.substr(0, t.statement.find('{'));
+    const std::string criterion = t.criterion.substr(0, t.criterion.find('{'));
+    bool judged = false;
+    for (const auto& c : claims)
+      judged = judged || (c.section == t.section && c.statement.rfind(statement, 0) == 0 && c.criterion.rfind(criterion, 0) == 0);
+    CHECK(judged);
+  }
+}
