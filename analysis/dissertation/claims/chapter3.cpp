@@ -61,6 +61,53 @@ ClaimResult claim_3_1(const DissertationResults& res) {
   return r;
 }
 
+// Sec. 3.1: "Though it often is the case that D_max ~ D_stop, this is not necessary, and does
+// not occur for large V and/or eta."
+ClaimResult claim_3_1_overshoot(const DissertationResults& res) {
+  ClaimResult r = claim("3.1 overshoot");
+  std::vector<std::string> missing, near_failures;
+  std::size_t near = 0;
+  double largest_far = -1.0;
+  std::string largest_far_slug;
+  for (const char* n : {"ch3_ca", "ch3_eb", "ch3_v", "ch3_eta"}) {
+    const DissertationCampaign& c = res.campaign(n);
+    if (!c.found) {
+      missing.push_back(c.missing);
+      continue;
+    }
+    for (const DissertationMember* m : c.in_case("")) {
+      const double V = parameter(*m, "V"), eta = parameter(*m, "eta");
+      const bool is_near = V <= 1.0 && eta <= 1.0, is_far = V >= 5.0 || eta >= 5.0;
+      if (!is_near && !is_far) continue;
+      std::string why;
+      const auto data = res.member_data(*m, why);
+      const double D_max = data ? marker(*data, "D_max") : k_nan, D_stop = data ? marker(*data, "D_stop") : k_nan;
+      if (!std::isfinite(D_max) || !std::isfinite(D_stop)) {
+        missing.push_back(std::string(n) + "/" + m->slug + ": " + (data ? "no D_max / D_stop" : why));
+        continue;
+      }
+      const double overshoot = (D_max - D_stop) / D_stop;
+      if (is_near) {
+        ++near;
+        if (overshoot > 0.02) near_failures.push_back(std::string(n) + "/" + m->slug + " " + num(100 * overshoot) + " %");
+      } else if (overshoot > largest_far) {
+        largest_far = overshoot, largest_far_slug = std::string(n) + "/" + m->slug;
+      }
+    }
+  }
+  const std::string text = std::to_string(near) + " members with V <= 1 and eta <= 1, " +
+                           std::to_string(near_failures.size()) + " with D_max more than 2 % above D_stop" +
+                           (near_failures.empty() ? "" : " (" + first_gaps(near_failures) + ")") +
+                           "; largest (D_max - D_stop)/D_stop at V >= 5 or eta >= 5: " +
+                           (largest_far_slug.empty() ? "none" : num(100 * largest_far) + " % (" + largest_far_slug + ")");
+  if (!missing.empty() || near < 5 || largest_far_slug.empty()) {
+    r.measured = "cannot tell (members missing): " + (missing.empty() ? text : first_gaps(missing) + "; so far " + text);
+    return r;
+  }
+  set(r, double(near_failures.size()) <= 0.2 * double(near) && largest_far > 0.05, text);
+  return r;
+}
+
 // Sec. 3.2: "recovery time k tau_r is almost directly proportional with Ca"; "for very small Ca
 // with circular capsules, k tau_r is too large for this relationship to hold". The exemption is
 // the circle's only (the text calls the sphere's relation the cleaner one); it starts below
@@ -81,15 +128,76 @@ ClaimResult claim_3_2_proportional(const DissertationResults& res, const std::st
   return r;
 }
 
+// A fitted time divided by Ca V over a case's Ca sweep: tau/tau_e with tau_e = V mu a^2 / E_s
+// (Fig. 16), from k tau and Ca = mu k a / E_s. Ca >= ca_from only.
+Series normalized_by_elastic_time(const DissertationCampaign& c, const std::string& case_name, const std::string& column,
+                                  double ca_from = 0.0) {
+  Series s = series(c, case_name, "Ca", column, [&](const DissertationMember& m) { return parameter(m, "Ca") >= ca_from - 1e-12; });
+  for (auto& p : s.points) p.y /= p.x * parameter(*p.member, "V");
+  return s;
+}
+
 // Sec. 3.2: "the normalized recovery time tau_r/tau_e is nearly constant for Ca >= 0.1".
 ClaimResult claim_3_2_constant(const DissertationResults& res, const std::string& case_name) {
   auto [r, c] = open_claim(res, "3.2 constant", {{"case", case_name}});
   if (!c) return r;
-  Series s = series(*c, case_name, "Ca", "recovery.k_tau_r", [](const DissertationMember& m) { return parameter(m, "Ca") >= 0.1 - 1e-12; });
-  for (auto& p : s.points) p.y /= p.x * parameter(*p.member, "V");
+  const Series s = normalized_by_elastic_time(*c, case_name, "recovery.k_tau_r", 0.1);
   if (!have_points(r, s, 3, "values of Ca >= 0.1 with k tau_r")) return r;
   const double spread = relative_spread(s.ys());
   set(r, spread <= 0.2, "spread " + num(spread) + "; tau_r/tau_e: " + s.listing("Ca"));
+  return r;
+}
+
+// Sec. 3.2: "response time k tau_s rises linearly but modestly with Ca" (beside k tau_r,
+// "almost directly proportional": modest against that).
+ClaimResult claim_3_2_modest(const DissertationResults& res, const std::string& case_name) {
+  auto [r, c] = open_claim(res, "3.2 modest", {{"case", case_name}});
+  if (!c) return r;
+  const Series s = series(*c, case_name, "Ca", "response.k_tau_s");
+  const Series q = series(*c, case_name, "Ca", "recovery.k_tau_r");
+  if (!have_points(r, s, 4, "values of Ca with k tau_s") || !have_points(r, q, 2, "values of Ca with k tau_r")) return r;
+  if (s.points.front().x != q.points.front().x || s.points.back().x != q.points.back().x) {
+    r.measured = "cannot tell (members missing): the two times span other Ca (k tau_s " + s.listing("Ca") +
+                 "; k tau_r " + q.listing("Ca") + ")";
+    return r;
+  }
+  const LineFit f = fit_line(s.xs(), s.ys());
+  const double rise_s = s.points.back().y / s.points.front().y - 1.0, rise_r = q.points.back().y / q.points.front().y - 1.0;
+  set(r, f.ok && f.r_squared >= 0.9 && f.slope > 0 && rise_s <= 0.5 * rise_r,
+      "slope " + num(f.slope) + ", R^2 " + num(f.r_squared) + "; rise over Ca " + num(s.points.front().x) + "-" +
+          num(s.points.back().x) + ": k tau_s " + num(100 * rise_s) + " %, k tau_r " + num(100 * rise_r) +
+          " %; k tau_s: " + s.listing("Ca"));
+  return r;
+}
+
+// Sec. 3.2: "the normalized response time tau_s/tau_e continues to decrease as Ca rises".
+ClaimResult claim_3_2_response_normalized(const DissertationResults& res, const std::string& case_name) {
+  auto [r, c] = open_claim(res, "3.2 response normalized", {{"case", case_name}});
+  if (!c) return r;
+  const Series s = normalized_by_elastic_time(*c, case_name, "response.k_tau_s");
+  if (!have_points(r, s, 4, "values of Ca with k tau_s")) return r;
+  std::string rises;
+  for (std::size_t i = 1; i < s.points.size(); ++i)
+    if (!(s.points[i].y < s.points[i - 1].y)) rises += (rises.empty() ? "" : ", ") + num(s.points[i - 1].x) + " -> " + num(s.points[i].x);
+  set(r, rises.empty(), (rises.empty() ? "falls at every step" : "does not fall from Ca " + rises) + "; tau_s/tau_e: " +
+                            s.listing("Ca"));
+  return r;
+}
+
+// Sec. 3.2: "the constant ratio tau_r/tau_e is cleaner for the spherical capsule".
+ClaimResult claim_3_2_cleaner(const DissertationResults& res) {
+  auto [r, c] = open_claim(res, "3.2 cleaner");
+  if (!c) return r;
+  double spread[2] = {k_nan, k_nan};
+  std::string text;
+  for (int k = 0; k < 2; ++k) {
+    const std::string case_name = k == 0 ? "2d" : "3d";
+    const Series s = normalized_by_elastic_time(*c, case_name, "recovery.k_tau_r", 0.1);
+    if (!have_points(r, s, 3, case_name + " values of Ca >= 0.1 with k tau_r")) return r;
+    spread[k] = relative_spread(s.ys());
+    text += (k ? "; " : "") + case_name + ": spread " + num(spread[k]) + " (" + s.listing("Ca") + ")";
+  }
+  set(r, spread[1] < spread[0], text);
   return r;
 }
 
@@ -147,6 +255,31 @@ ClaimResult claim_3_3_slight(const DissertationResults& res) {
   return r;
 }
 
+// Sec. 3.3: "In both settings, a capsule with E_b = 0 still recovers its shape, thanks to the
+// hydrodynamics".
+ClaimResult claim_3_3_no_bending(const DissertationResults& res, const std::string& case_name) {
+  auto [r, c] = open_claim(res, "3.3 no bending", {{"case", case_name}});
+  if (!c) return r;
+  const DissertationMember* flat = nullptr;
+  for (const DissertationMember* m : c->in_case(case_name))
+    if (parameter(*m, "E_b") == 0.0) flat = m;
+  if (!flat) {
+    r.measured = "cannot tell (members missing): no member with E_b = 0 in case " + case_name;
+    return r;
+  }
+  std::string why;
+  const auto data = res.member_data(*flat, why);
+  const double D_stop = data ? marker(*data, "D_stop") : k_nan, D_inf = data ? marker(*data, "D_inf") : k_nan;
+  if (!std::isfinite(D_stop) || !std::isfinite(D_inf)) {
+    r.measured = "cannot tell (members missing): " + (data ? flat->slug + " has no D_stop / D_inf" : why);
+    return r;
+  }
+  set(r, D_inf <= 0.2 * D_stop,
+      flat->slug + ": D_stop " + num(D_stop) + ", D_inf " + num(D_inf) + " (" + num(100 * D_inf / D_stop) +
+          " % of D_stop) at kt " + num(marker(*data, "t_end")));
+  return r;
+}
+
 // Sec. 3.4: "Both k tau_s and k tau_r have approximately linear relationships with V".
 ClaimResult claim_3_4_linear(const DissertationResults& res, const std::string& case_name) {
   auto [r, c] = open_claim(res, "3.4 linear", {{"case", case_name}});
@@ -176,6 +309,21 @@ ClaimResult claim_3_4_small_V(const DissertationResults& res, const std::string&
   if (s.points.back().x == q.points.back().x && s.points.size() > 1)
     text += " (at V " + num(s.points.back().x) + ": ratio " + num(q.points.back().y / s.points.back().y) + ")";
   set(r, ratio >= 0.75 && ratio <= 1.33, text);
+  return r;
+}
+
+// Sec. 3.4: "the speed of the capsule's recovery process is more adversely impacted by a high
+// fluid viscosity inside the capsule than is the capsule's response to deformation".
+ClaimResult claim_3_4_recovery_more(const DissertationResults& res, const std::string& case_name) {
+  auto [r, c] = open_claim(res, "3.4 recovery more affected", {{"case", case_name}});
+  if (!c) return r;
+  const Series s = series(*c, case_name, "V", "response.k_tau_s");
+  const Series q = series(*c, case_name, "V", "recovery.k_tau_r");
+  if (!have_points(r, s, 4, "values of V with k tau_s") || !have_points(r, q, 4, "values of V with k tau_r")) return r;
+  const LineFit fs = fit_line(s.xs(), s.ys()), fr = fit_line(q.xs(), q.ys());
+  set(r, fs.ok && fr.ok && fr.slope > fs.slope,
+      "slope against V: k tau_r " + num(fr.slope) + ", k tau_s " + num(fs.slope) + " (over V " + num(q.points.front().x) +
+          "-" + num(q.points.back().x) + ")");
   return r;
 }
 

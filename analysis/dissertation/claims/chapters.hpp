@@ -11,8 +11,14 @@ namespace capsule::analysis::claims {
 ClaimResult claim_2_mesh(const DissertationResults& res);
 ClaimResult claim_2_G(const DissertationResults& res);
 ClaimResult claim_3_1(const DissertationResults& res);
+ClaimResult claim_3_1_overshoot(const DissertationResults& res);
 ClaimResult claim_3_2_proportional(const DissertationResults& res, const std::string& case_name);
 ClaimResult claim_3_2_constant(const DissertationResults& res, const std::string& case_name);
+ClaimResult claim_3_2_modest(const DissertationResults& res, const std::string& case_name);
+ClaimResult claim_3_2_response_normalized(const DissertationResults& res, const std::string& case_name);
+ClaimResult claim_3_2_cleaner(const DissertationResults& res);
+ClaimResult claim_3_3_no_bending(const DissertationResults& res, const std::string& case_name);
+ClaimResult claim_3_4_recovery_more(const DissertationResults& res, const std::string& case_name);
 ClaimResult claim_3_3_falls(const DissertationResults& res, const std::string& case_name, const std::string& column);
 ClaimResult claim_3_3_slight(const DissertationResults& res);
 ClaimResult claim_3_4_linear(const DissertationResults& res, const std::string& case_name);

@@ -104,6 +104,12 @@ inline std::string first_gaps(const std::vector<std::string>& gaps) {
   return s;
 }
 
+// A member file's marker (/markers: D_max, D_stop, D_inf, t_stop, ...; docs/guide/member-files.md "Layout"); NaN when it is not recorded.
+inline double marker(const io::MemberData& data, const std::string& name) {
+  const auto it = data.markers.find(name);
+  return it == data.markers.end() ? k_nan : it->second;
+}
+
 // False (and r.measured says why) when the campaign is not there.
 inline bool have_campaign(ClaimResult& r, const DissertationCampaign& c) {
   if (c.found) return true;
