@@ -27,11 +27,17 @@ std::vector<ClaimResult> evaluate_claims(const DissertationResults& res) {
   out.push_back(claim_3_5_2d(res));
   out.push_back(claim_3_5_3d(res));
   out.push_back(claim_orders(res, "4.1.1 orders", "two_phase", -1, 1, missed_stop_in(res)));
+  out.push_back(claim_4_1_1_fit_quality(res));
   out.push_back(claim_4_1_1_R1(res));
   out.push_back(claim_4_1_1_R2(res));
+  out.push_back(claim_4_1_1_R1_weak(res));
+  out.push_back(claim_4_1_1_R2_eta(res));
   out.push_back(claim_4_1_1_no_bending(res));
   out.push_back(claim_4_1_2_r2(res));
   out.push_back(claim_orders(res, "4.1.2 orders", "double_exponential", -1, 0, outside_tumbling_ensemble_in(res)));
+  out.push_back(claim_4_1_2_Ca(res));
+  out.push_back(claim_4_1_2_E_b_V(res));
+  out.push_back(claim_4_1_2_eta(res));
   out.push_back(claim_4_1_2_fig38(res));
   out.push_back(claim_4_2_A(res));
   out.push_back(claim_4_2_B(res));

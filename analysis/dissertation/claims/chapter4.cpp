@@ -36,15 +36,6 @@ ClaimResult claim_orders(const DissertationResults& res, const std::string& key,
   return r;
 }
 
-// Exponent of a fitted time against one parameter of a case, judged against [lo, hi].
-void exponent_part(Parts& parts, const DissertationCampaign& c, const std::string& case_name, const std::string& x,
-                   const std::string& column, double lo, double hi, const Skip& skip, const Keep& keep = {}) {
-  const Series s = series(c, case_name, x, column, keep, skip);
-  if (!parts.enough(s, 3, case_name, x, column)) return;
-  const LineFit f = fit_power(s.xs(), s.ys());
-  parts.add(f.ok && f.slope >= lo && f.slope <= hi, x + " exponent " + num(f.slope) + " (" + s.listing(x) + ")" + not_counted(s));
-}
-
 // Sec. 4.1.1: "for eta > 0, one might make the approximation k tau_R1 ~ Ca eta";
 // "a significant linear relationship prevailed between k tau_R1 and eta".
 ClaimResult claim_4_1_1_R1(const DissertationResults& res) {

@@ -27,8 +27,14 @@ ClaimResult claim_3_5_2d(const DissertationResults& res);
 ClaimResult claim_3_5_3d(const DissertationResults& res);
 ClaimResult claim_orders(const DissertationResults& res, const std::string& key, const std::string& fit, int o1, int o2,
                          const Skip& skip);
+ClaimResult claim_4_1_1_fit_quality(const DissertationResults& res);
 ClaimResult claim_4_1_1_R1(const DissertationResults& res);
 ClaimResult claim_4_1_1_R2(const DissertationResults& res);
+ClaimResult claim_4_1_1_R1_weak(const DissertationResults& res);
+ClaimResult claim_4_1_1_R2_eta(const DissertationResults& res);
+ClaimResult claim_4_1_2_Ca(const DissertationResults& res);
+ClaimResult claim_4_1_2_E_b_V(const DissertationResults& res);
+ClaimResult claim_4_1_2_eta(const DissertationResults& res);
 ClaimResult claim_4_1_1_no_bending(const DissertationResults& res);
 ClaimResult claim_4_1_2_r2(const DissertationResults& res);
 ClaimResult claim_4_1_2_fig38(const DissertationResults& res);

@@ -335,6 +335,15 @@ inline std::vector<ShearMember> shear_members(const DissertationResults& res, co
   return out;
 }
 
+// Exponent of a fitted time against one parameter of a case, judged against [lo, hi] (>= 3 values).
+inline void exponent_part(Parts& parts, const DissertationCampaign& c, const std::string& case_name, const std::string& x,
+                          const std::string& column, double lo, double hi, const Skip& skip, const Keep& keep = {}) {
+  const Series s = series(c, case_name, x, column, keep, skip);
+  if (!parts.enough(s, 3, case_name, x, column)) return;
+  const LineFit f = fit_power(s.xs(), s.ys());
+  parts.add(f.ok && f.slope >= lo && f.slope <= hi, x + " exponent " + num(f.slope) + " (" + s.listing(x) + ")" + not_counted(s));
+}
+
 // Sec. 5.2: "this power law method ... is independent of the Lagrangian grid" (Fig. 59).
 // D_xy at the stop of a case's members differs by at most `bound` of its mean over `key`'s
 // values (at least `needed` members): mesh independence (Figs. 10, 59), G independence (Fig. 12).

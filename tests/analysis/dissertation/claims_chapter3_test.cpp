@@ -115,7 +115,7 @@ TEST_CASE("Chapter 3 claims: recovery more affected by V than response", "[analy
   TempDir tmp("dissertation_claims_v");
   SECTION("k tau_r steeper in V agrees") {
     write_fits(tmp.path, "ch3_v", sweep("3d", "V", k_v, [](double v) { return 0.3 + 0.05 * v; }, [](double v) { return 0.5 + 0.2 * v; }));
-    const auto& c = find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "3.4", "more affected by V than response (3d)");
+    const auto c = find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "3.4", "more affected by V than response (3d)");
     INFO(c.measured);
     CHECK(c.verdict == Verdict::agrees);
     CHECK(c.measured.find("k tau_r 0.2, k tau_s 0.05") != std::string::npos);

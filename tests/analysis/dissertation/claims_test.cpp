@@ -284,7 +284,7 @@ TEST_CASE("Dissertation claims: the R^2 rule of Sec. 3.1 differs on one poor fit
                                                                                 "the model does not describe the data: R^2 = 0.3")
                                                            : known_fit("recovery (86)", {{"k_tau_r", {c, 0.01}}}, 0.995)}}));
     write_fits(tmp.path, "ch3_ca", members);
-    const auto& c = find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "3.1", "R^2");
+    const auto c = find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "3.1", "R^2");
     INFO(c.measured);
     CHECK(c.verdict == Verdict::differs);
     CHECK(c.measured.find("lowest R^2: response 0.999, recovery < 0.5 (1 refused)") != std::string::npos);

@@ -1,0 +1,147 @@
+// The claims of the dissertation's Chapter 4 on how the two recovery times of the biconcave capsule
+// depend on the parameters (Figs. 25-28 tank-treading, Figs. 33-36 tumbling) and on how well
+// (87)-(88) fit, each a rule with a stated numeric criterion (claims/support.hpp).
+#include "analysis/dissertation/claims/chapters.hpp"
+#include "analysis/dissertation/claims/support.hpp"
+
+namespace capsule::analysis::claims {
+
+namespace {
+
+// The rise of a series over its sweep, last / first - 1.
+double rise_of(const Series& s) { return s.points.back().y / s.points.front().y - 1.0; }
+
+// Both recovery times of one case against x, or why not: the two series must cover the same
+// first and last x with at least n values each.
+bool both_times(Parts& parts, const DissertationCampaign& c, const std::string& case_name, const std::string& x,
+                const std::string& fit, std::size_t n, const Skip& skip, Series& r1, Series& r2, const Keep& keep = {}) {
+  r1 = series(c, case_name, x, fit + ".k_tau_R1", keep, skip);
+  r2 = series(c, case_name, x, fit + ".k_tau_R2", keep, skip);
+  if (!parts.enough(r1, n, case_name, x, fit + ".k_tau_R1") || !parts.enough(r2, n, case_name, x, fit + ".k_tau_R2"))
+    return false;
+  if (r1.points.front().x == r2.points.front().x && r1.points.back().x == r2.points.back().x) return true;
+  return part_missing(parts.why, "case " + case_name + ": the two times span other values of " + x);
+}
+
+const char* k_tt_fit = "two_phase";
+const char* k_tumble_fit = "double_exponential";
+
+}  // namespace
+
+// Sec. 4.1.1: "The fitted results had a coefficients of correlation R^2 > 0.95 and the majority of
+// cases were in excess of 0.98."
+ClaimResult claim_4_1_1_fit_quality(const DissertationResults& res) {
+  auto [r, c] = open_claim(res, "4.1.1 fit quality");
+  if (!c) return r;
+  Parts parts;
+  for (const char* fit : {"two_phase_R1", "two_phase_R2"}) {
+    std::size_t n = 0, above_098 = 0;
+    double lowest = 1.0;
+    std::vector<std::string> below, seen;
+    for (const char* case_name : {"Ca", "E_b", "V", "eta"})
+      for (const DissertationMember* m : c->in_case(case_name)) {
+        if (std::find(seen.begin(), seen.end(), m->slug) != seen.end()) continue;  // the base member is in every case
+        seen.push_back(m->slug);
+        const auto it = m->fits.find(fit);
+        if (it == m->fits.end() || !it->second.ok) continue;
+        ++n;
+        const double r2 = it->second.r_squared;
+        lowest = std::min(lowest, r2);
+        above_098 += r2 > 0.98;
+        if (!(r2 > 0.95)) below.push_back(m->slug + " " + num(r2));
+      }
+    const std::string phase = fit == std::string("two_phase_R1") ? "(87)" : "(88)";
+    if (n < 5) {
+      part_missing(parts.why, phase + ": " + std::to_string(n) + " fits, need 5");
+      continue;
+    }
+    parts.add(below.empty() && 2 * above_098 > n,
+              phase + ": " + std::to_string(n) + " fits, lowest R^2 " + num(lowest) + ", " + std::to_string(above_098) +
+                  " above 0.98" + (below.empty() ? "" : ", at or below 0.95: " + first_gaps(below)));
+  }
+  return parts.finish(r);
+}
+
+// Sec. 4.1.1: "During the first phase, however, the recovery time k tau_R1 decreased only slightly for
+// larger bending stiffness"; "a much weaker linear relationship between V and the initial recovery
+// time k tau_R1" (than k tau_R2's, "almost directly proportional with V").
+ClaimResult claim_4_1_1_R1_weak(const DissertationResults& res) {
+  auto [r, c] = open_claim(res, "4.1.1 R1 weak");
+  if (!c) return r;
+  Parts parts;
+  Series r1, r2;
+  if (both_times(parts, *c, "E_b", "E_b", k_tt_fit, 3, missed_stop_in(res), r1, r2,
+                 [](const DissertationMember& m) { return parameter(m, "E_b") > 0.0; })) {
+    const double fall = -rise_of(r1);
+    parts.add(fall >= -0.02 && fall < 0.3, "E_b: k tau_R1 falls by " + num(100 * fall) + " % (" + r1.listing("E_b") + ")");
+  }
+  if (both_times(parts, *c, "V", "V", k_tt_fit, 3, missed_stop_in(res), r1, r2)) {
+    const double rise1 = rise_of(r1), rise2 = rise_of(r2);
+    parts.add(rise1 <= 0.5 * rise2, "V " + num(r1.points.front().x) + "-" + num(r1.points.back().x) + ": k tau_R1 rises " +
+                                        num(100 * rise1) + " %, k tau_R2 " + num(100 * rise2) + " %");
+  }
+  return parts.finish(r);
+}
+
+// Sec. 4.1.1: "the latter recovery time k tau_R2 was clearly independent of the membrane viscosity ratio".
+ClaimResult claim_4_1_1_R2_eta(const DissertationResults& res) {
+  auto [r, c] = open_claim(res, "4.1.1 R2 eta");
+  if (!c) return r;
+  const Series s = series(*c, "eta", "eta", std::string(k_tt_fit) + ".k_tau_R2", {}, missed_stop_in(res));
+  if (!have_points(r, s, 3, "values of eta with k tau_R2")) return r;
+  const double spread = relative_spread(s.ys());
+  set(r, spread <= 0.1, "spread " + num(spread) + "; k tau_R2: " + s.listing("eta") + not_counted(s));
+  return r;
+}
+
+// Sec. 4.1.2: "both recovery times were almost directly proportional to Ca".
+ClaimResult claim_4_1_2_Ca(const DissertationResults& res) {
+  auto [r, c] = open_claim(res, "4.1.2 Ca");
+  if (!c) return r;
+  Parts parts;
+  for (const char* t : {"k_tau_R1", "k_tau_R2"})
+    exponent_part(parts, *c, "Ca", "Ca", std::string(k_tumble_fit) + "." + t, 0.7, 1.3, outside_tumbling_ensemble_in(res));
+  return parts.finish(r);
+}
+
+// Sec. 4.1.2: "bending stiffness and the fluid viscosity ratio had fairly negligible impacts on
+// k tau_R1, but k tau_R2 varied directly with V and inversely with E_b".
+ClaimResult claim_4_1_2_E_b_V(const DissertationResults& res) {
+  auto [r, c] = open_claim(res, "4.1.2 E_b and V");
+  if (!c) return r;
+  Parts parts;
+  const Skip skip = outside_tumbling_ensemble_in(res);
+  const std::string R1 = std::string(k_tumble_fit) + ".k_tau_R1", R2 = std::string(k_tumble_fit) + ".k_tau_R2";
+  for (const char* x : {"E_b", "V"}) {
+    const Series s = series(*c, x, x, R1, {}, skip);
+    if (!parts.enough(s, 3, x, x, R1)) continue;
+    const double spread = relative_spread(s.ys());
+    parts.add(spread <= 0.3, std::string(x) + ": k tau_R1 spread " + num(spread) + " (" + s.listing(x) + ")" + not_counted(s));
+  }
+  exponent_part(parts, *c, "E_b", "E_b", R2, -1.3, -0.7, skip);
+  const Series v = series(*c, "V", "V", R2, {}, skip);
+  if (parts.enough(v, 3, "V", "V", R2)) {
+    const LineFit f = fit_line(v.xs(), v.ys());
+    parts.add(f.ok && f.slope > 0, "V: k tau_R2 slope " + num(f.slope) + " (" + v.listing("V") + ")" + not_counted(v));
+  }
+  return parts.finish(r);
+}
+
+// Sec. 4.1.2: "for the membrane viscosity ratio, both recovery times increased modestly with eta for
+// the tumbling capsule, though k tau_R1 still had a higher dependence on eta".
+ClaimResult claim_4_1_2_eta(const DissertationResults& res) {
+  auto [r, c] = open_claim(res, "4.1.2 eta");
+  if (!c) return r;
+  Parts parts;
+  Series r1, r2;
+  if (both_times(parts, *c, "eta", "eta", k_tumble_fit, 3, outside_tumbling_ensemble_in(res), r1, r2)) {
+    const LineFit f1 = fit_line(r1.xs(), r1.ys()), f2 = fit_line(r2.xs(), r2.ys());
+    const double rise1 = rise_of(r1), rise2 = rise_of(r2);
+    parts.add(f1.ok && f2.ok && f1.slope > 0 && f2.slope > 0 && rise1 > rise2,
+              "slopes k tau_R1 " + num(f1.slope) + ", k tau_R2 " + num(f2.slope) + "; rise over eta " + num(r1.points.front().x) +
+                  "-" + num(r1.points.back().x) + ": k tau_R1 " + num(100 * rise1) + " %, k tau_R2 " + num(100 * rise2) + " %");
+  }
+  return parts.finish(r);
+}
+
+}  // namespace capsule::analysis::claims
