@@ -5,11 +5,13 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "analysis/dissertation/claims.hpp"
 #include "analysis/fit/fit_result.hpp"
 
 namespace capsule::analysis::testing {
@@ -58,6 +60,15 @@ inline void write_fits(const std::filesystem::path& results, const std::string& 
   nlohmann::json j{{"campaign", campaign}, {"members", members}, {"bilinear", bilinear}};
   if (!analysis.is_null()) j["analysis"] = analysis;
   std::ofstream(dir / "fits.json") << j.dump(2);
+}
+
+// The claim of `section` whose statement contains `words`; throws (failing the test) when there is
+// none. Keep the claims vector alive while the reference is used.
+inline const ClaimResult& find_claim(const std::vector<ClaimResult>& claims, const std::string& section,
+                                     const std::string& words) {
+  for (const auto& c : claims)
+    if (c.section == section && c.statement.find(words) != std::string::npos) return c;
+  throw std::runtime_error("no claim " + section + " containing \"" + words + "\"");
 }
 
 }  // namespace capsule::analysis::testing

@@ -148,14 +148,27 @@ ClaimResult claim_3_2_constant(const DissertationResults& res, const std::string
   return r;
 }
 
+// k tau_s and k tau_r of a case against x, with at least n values each; nullopt, r.measured saying
+// why, otherwise.
+struct BothTimes {
+  Series response, recovery;
+};
+std::optional<BothTimes> both_times(ClaimResult& r, const DissertationCampaign& c, const std::string& case_name,
+                                    const std::string& x, std::size_t n) {
+  BothTimes t{series(c, case_name, x, "response.k_tau_s"), series(c, case_name, x, "recovery.k_tau_r")};
+  if (!have_points(r, t.response, n, "values of " + x + " with k tau_s") ||
+      !have_points(r, t.recovery, n, "values of " + x + " with k tau_r"))
+    return std::nullopt;
+  return t;
+}
+
 // Sec. 3.2: "response time k tau_s rises linearly but modestly with Ca" (beside k tau_r,
 // "almost directly proportional": modest against that).
 ClaimResult claim_3_2_modest(const DissertationResults& res, const std::string& case_name) {
   auto [r, c] = open_claim(res, "3.2 modest", {{"case", case_name}});
-  if (!c) return r;
-  const Series s = series(*c, case_name, "Ca", "response.k_tau_s");
-  const Series q = series(*c, case_name, "Ca", "recovery.k_tau_r");
-  if (!have_points(r, s, 4, "values of Ca with k tau_s") || !have_points(r, q, 2, "values of Ca with k tau_r")) return r;
+  const auto t = c ? both_times(r, *c, case_name, "Ca", 4) : std::nullopt;
+  if (!t) return r;
+  const Series &s = t->response, &q = t->recovery;
   if (s.points.front().x != q.points.front().x || s.points.back().x != q.points.back().x) {
     r.measured = "cannot tell (members missing): the two times span other Ca (k tau_s " + s.listing("Ca") +
                  "; k tau_r " + q.listing("Ca") + ")";
@@ -316,14 +329,12 @@ ClaimResult claim_3_4_small_V(const DissertationResults& res, const std::string&
 // fluid viscosity inside the capsule than is the capsule's response to deformation".
 ClaimResult claim_3_4_recovery_more(const DissertationResults& res, const std::string& case_name) {
   auto [r, c] = open_claim(res, "3.4 recovery more affected", {{"case", case_name}});
-  if (!c) return r;
-  const Series s = series(*c, case_name, "V", "response.k_tau_s");
-  const Series q = series(*c, case_name, "V", "recovery.k_tau_r");
-  if (!have_points(r, s, 4, "values of V with k tau_s") || !have_points(r, q, 4, "values of V with k tau_r")) return r;
-  const LineFit fs = fit_line(s.xs(), s.ys()), fr = fit_line(q.xs(), q.ys());
+  const auto t = c ? both_times(r, *c, case_name, "V", 4) : std::nullopt;
+  if (!t) return r;
+  const LineFit fs = fit_line(t->response.xs(), t->response.ys()), fr = fit_line(t->recovery.xs(), t->recovery.ys());
   set(r, fs.ok && fr.ok && fr.slope > fs.slope,
-      "slope against V: k tau_r " + num(fr.slope) + ", k tau_s " + num(fs.slope) + " (over V " + num(q.points.front().x) +
-          "-" + num(q.points.back().x) + ")");
+      "slope against V: k tau_r " + num(fr.slope) + ", k tau_s " + num(fs.slope) + " (over V " +
+          num(t->recovery.points.front().x) + "-" + num(t->recovery.points.back().x) + ")");
   return r;
 }
 

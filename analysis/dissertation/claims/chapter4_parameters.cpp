@@ -8,19 +8,26 @@ namespace capsule::analysis::claims {
 
 namespace {
 
-// The rise of a series over its sweep, last / first - 1.
-double rise_of(const Series& s) { return s.points.back().y / s.points.front().y - 1.0; }
-
-// Both recovery times of one case against x, or why not: the two series must cover the same
-// first and last x with at least n values each.
-bool both_times(Parts& parts, const DissertationCampaign& c, const std::string& case_name, const std::string& x,
-                const std::string& fit, std::size_t n, const Skip& skip, Series& r1, Series& r2, const Keep& keep = {}) {
-  r1 = series(c, case_name, x, fit + ".k_tau_R1", keep, skip);
-  r2 = series(c, case_name, x, fit + ".k_tau_R2", keep, skip);
-  if (!parts.enough(r1, n, case_name, x, fit + ".k_tau_R1") || !parts.enough(r2, n, case_name, x, fit + ".k_tau_R2"))
-    return false;
-  if (r1.points.front().x == r2.points.front().x && r1.points.back().x == r2.points.back().x) return true;
-  return part_missing(parts.why, "case " + case_name + ": the two times span other values of " + x);
+// Both recovery times of one case against x, covering the same first and last x with at least
+// n values each, and how much each rises over the sweep (last / first - 1).
+struct TwoTimes {
+  Series r1, r2;
+  double rise1 = k_nan, rise2 = k_nan;
+  std::string span(const std::string& x) const { return x + " " + num(r1.points.front().x) + "-" + num(r1.points.back().x); }
+};
+std::optional<TwoTimes> two_times(Parts& parts, const DissertationCampaign& c, const std::string& case_name,
+                                  const std::string& x, const std::string& fit, std::size_t n, const Skip& skip,
+                                  const Keep& keep = {}) {
+  TwoTimes t{series(c, case_name, x, fit + ".k_tau_R1", keep, skip), series(c, case_name, x, fit + ".k_tau_R2", keep, skip)};
+  if (!parts.enough(t.r1, n, case_name, x, fit + ".k_tau_R1") || !parts.enough(t.r2, n, case_name, x, fit + ".k_tau_R2"))
+    return std::nullopt;
+  if (t.r1.points.front().x != t.r2.points.front().x || t.r1.points.back().x != t.r2.points.back().x) {
+    part_missing(parts.why, "case " + case_name + ": the two times span other values of " + x);
+    return std::nullopt;
+  }
+  t.rise1 = t.r1.points.back().y / t.r1.points.front().y - 1.0;
+  t.rise2 = t.r2.points.back().y / t.r2.points.front().y - 1.0;
+  return t;
 }
 
 const char* k_tt_fit = "two_phase";
@@ -69,17 +76,12 @@ ClaimResult claim_4_1_1_R1_weak(const DissertationResults& res) {
   auto [r, c] = open_claim(res, "4.1.1 R1 weak");
   if (!c) return r;
   Parts parts;
-  Series r1, r2;
-  if (both_times(parts, *c, "E_b", "E_b", k_tt_fit, 3, missed_stop_in(res), r1, r2,
-                 [](const DissertationMember& m) { return parameter(m, "E_b") > 0.0; })) {
-    const double fall = -rise_of(r1);
-    parts.add(fall >= -0.02 && fall < 0.3, "E_b: k tau_R1 falls by " + num(100 * fall) + " % (" + r1.listing("E_b") + ")");
-  }
-  if (both_times(parts, *c, "V", "V", k_tt_fit, 3, missed_stop_in(res), r1, r2)) {
-    const double rise1 = rise_of(r1), rise2 = rise_of(r2);
-    parts.add(rise1 <= 0.5 * rise2, "V " + num(r1.points.front().x) + "-" + num(r1.points.back().x) + ": k tau_R1 rises " +
-                                        num(100 * rise1) + " %, k tau_R2 " + num(100 * rise2) + " %");
-  }
+  const auto positive_E_b = [](const DissertationMember& m) { return parameter(m, "E_b") > 0.0; };
+  if (const auto e = two_times(parts, *c, "E_b", "E_b", k_tt_fit, 3, missed_stop_in(res), positive_E_b))
+    parts.add(e->rise1 <= 0.02 && e->rise1 > -0.3, "E_b: k tau_R1 falls by " + num(-100 * e->rise1) + " % (" + e->r1.listing("E_b") + ")");
+  if (const auto v = two_times(parts, *c, "V", "V", k_tt_fit, 3, missed_stop_in(res)))
+    parts.add(v->rise1 <= 0.5 * v->rise2,
+              v->span("V") + ": k tau_R1 rises " + num(100 * v->rise1) + " %, k tau_R2 " + num(100 * v->rise2) + " %");
   return parts.finish(r);
 }
 
@@ -133,14 +135,12 @@ ClaimResult claim_4_1_2_eta(const DissertationResults& res) {
   auto [r, c] = open_claim(res, "4.1.2 eta");
   if (!c) return r;
   Parts parts;
-  Series r1, r2;
-  if (both_times(parts, *c, "eta", "eta", k_tumble_fit, 3, outside_tumbling_ensemble_in(res), r1, r2)) {
-    const LineFit f1 = fit_line(r1.xs(), r1.ys()), f2 = fit_line(r2.xs(), r2.ys());
-    const double rise1 = rise_of(r1), rise2 = rise_of(r2);
-    parts.add(f1.ok && f2.ok && f1.slope > 0 && f2.slope > 0 && rise1 > rise2,
-              "slopes k tau_R1 " + num(f1.slope) + ", k tau_R2 " + num(f2.slope) + "; rise over eta " + num(r1.points.front().x) +
-                  "-" + num(r1.points.back().x) + ": k tau_R1 " + num(100 * rise1) + " %, k tau_R2 " + num(100 * rise2) + " %");
-  }
+  const auto e = two_times(parts, *c, "eta", "eta", k_tumble_fit, 3, outside_tumbling_ensemble_in(res));
+  if (!e) return parts.finish(r);
+  const LineFit f1 = fit_line(e->r1.xs(), e->r1.ys()), f2 = fit_line(e->r2.xs(), e->r2.ys());
+  parts.add(f1.ok && f2.ok && f1.slope > 0 && f2.slope > 0 && e->rise1 > e->rise2,
+            "slopes k tau_R1 " + num(f1.slope) + ", k tau_R2 " + num(f2.slope) + "; rise over " + e->span("eta") +
+                ": k tau_R1 " + num(100 * e->rise1) + " %, k tau_R2 " + num(100 * e->rise2) + " %");
   return parts.finish(r);
 }
 

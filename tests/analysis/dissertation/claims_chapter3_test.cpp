@@ -20,13 +20,6 @@ namespace {
 
 using Curve = std::function<double(double)>;
 
-const ClaimResult& find_claim(const std::vector<ClaimResult>& claims, const std::string& section, const std::string& words) {
-  for (const auto& c : claims)
-    if (c.section == section && c.statement.find(words) != std::string::npos) return c;
-  FAIL("no claim " << section << " containing \"" << words << "\"");
-  return claims.front();
-}
-
 // One case of a Chapter 3 sweep: members at x = xs of parameter `x` with k tau_s = s(x), k tau_r = r(x).
 nlohmann::json sweep(const std::string& case_name, const std::string& x, const std::vector<double>& xs, const Curve& s,
                      const Curve& r) {

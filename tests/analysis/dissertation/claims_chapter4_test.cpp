@@ -18,13 +18,6 @@ namespace {
 
 using Curve = std::function<double(double)>;
 
-const ClaimResult& find_claim(const std::vector<ClaimResult>& claims, const std::string& section, const std::string& words) {
-  for (const auto& c : claims)
-    if (c.section == section && c.statement.find(words) != std::string::npos) return c;
-  FAIL("no claim " << section << " containing \"" << words << "\"");
-  return claims.front();
-}
-
 // One case of a Chapter 4 sweep over x: k tau_R1 = r1(x), k tau_R2 = r2(x), R^2 r2_fit(x) for both
 // phases; tank-treading members carry the two-phase fits (87)-(88), tumbling ones (90).
 nlohmann::json sweep(bool tumbling, const std::string& x, const std::vector<double>& xs, const Curve& r1, const Curve& r2,

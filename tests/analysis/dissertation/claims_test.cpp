@@ -17,14 +17,6 @@ using namespace capsule::analysis::testing;
 
 namespace {
 
-const ClaimResult& find_claim(const std::vector<ClaimResult>& claims, const std::string& section,
-                              const std::string& words) {
-  for (const auto& c : claims)
-    if (c.section == section && c.statement.find(words) != std::string::npos) return c;
-  FAIL("no claim " << section << " containing \"" << words << "\"");
-  return claims.front();
-}
-
 // ch3_ca, case 2d: k tau_r = f(Ca) at the given Ca, response k tau_s = 0.4, R^2 as given.
 void write_ch3_ca(const std::filesystem::path& dir, const std::vector<double>& ca, double (*k_tau_r)(double),
                   double recovery_r2 = 0.999) {
