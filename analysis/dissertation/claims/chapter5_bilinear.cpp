@@ -1,0 +1,119 @@
+// The claims of the dissertation's Sec. 5.1.1 on the bilinear models (95)-(96) of Table 2: how well
+// they fit, and how their coefficients move with E_b and Ca, each a rule with a stated numeric
+// criterion (claims/support.hpp). Table 2's numbers themselves are compared in table2.cpp.
+#include "analysis/compare/bilinear_entries.hpp"
+#include "analysis/dissertation/claims/chapters.hpp"
+#include "analysis/dissertation/claims/support.hpp"
+
+namespace capsule::analysis::claims {
+
+namespace {
+
+// Table 2's three ensembles: the base (Ca 0.05, E_b 0), with bending, at the larger Ca.
+const char* const k_base = "ch5_bilinear_ca005";
+const char* const k_bending = "ch5_bilinear_ca005_eb";
+const char* const k_large_Ca = "ch5_bilinear_ca02";
+const char* const k_times[] = {"response.k_tau_s", "recovery.k_tau_r"};
+
+// The finest-level bilinear fit of one time in one campaign; null, with why, when the campaign
+// was not run or the fit failed.
+const FitResult* bilinear_fit(const DissertationResults& res, const std::string& campaign, const std::string& target,
+                              std::vector<BilinearEntry>& keep, std::string& why) {
+  const DissertationCampaign& c = res.campaign(campaign);
+  if (!c.found) {
+    why = c.missing;
+    return nullptr;
+  }
+  keep = read_bilinear_entries(campaign, c.fits);
+  for (const BilinearEntry& e : keep)
+    if (e.target == target) {
+      if (e.fit.ok) return &e.fit;
+      why = campaign + ": the bilinear fit of " + bare_time(target) + " failed: " + e.fit.reason;
+      return nullptr;
+    }
+  why = campaign + ": no bilinear fit of " + bare_time(target);
+  return nullptr;
+}
+
+// The coefficients (a, b) and R^2 of one time's fit in each campaign, or why not.
+struct Coefficients {
+  double a = k_nan, b = k_nan, r_squared = k_nan;
+};
+bool coefficients(const DissertationResults& res, const std::vector<std::string>& campaigns, const std::string& target,
+                  std::map<std::string, Coefficients>& out, std::string& why) {
+  for (const auto& campaign : campaigns) {
+    std::vector<BilinearEntry> entries;
+    const FitResult* f = bilinear_fit(res, campaign, target, entries, why);
+    if (!f || !f->parameter("a") || !f->parameter("b")) {
+      if (why.empty()) why = campaign + ": the bilinear fit has no a / b";
+      return false;
+    }
+    out[campaign] = {f->parameter("a")->value, f->parameter("b")->value, f->r_squared};
+  }
+  return true;
+}
+
+}  // namespace
+
+// Sec. 5.1.1: "The coefficients a_s and b_s for k tau_s and both ensembles with Ca = 0.05 are
+// surprisingly similar, suggesting that their dependence on E_b may be small."
+ClaimResult claim_5_1_1_similar(const DissertationResults& res) {
+  ClaimResult r = claim("5.1.1 similar");
+  std::map<std::string, Coefficients> k;
+  std::string why;
+  if (!coefficients(res, {k_base, k_bending}, "response.k_tau_s", k, why)) {
+    r.measured = "cannot tell: " + why;
+    return r;
+  }
+  const double da = k[k_bending].a / k[k_base].a - 1.0, db = k[k_bending].b / k[k_base].b - 1.0;
+  set(r, std::abs(da) <= 0.2 && std::abs(db) <= 0.2,
+      "a_s " + num(k[k_base].a) + " -> " + num(k[k_bending].a) + " (" + num(100 * da) + " %), b_s " + num(k[k_base].b) +
+          " -> " + num(k[k_bending].b) + " (" + num(100 * db) + " %)");
+  return r;
+}
+
+// Sec. 5.1.1: "Starting from the base ensemble ... b_s/a_s ~ 2.8, the ratio of response coefficients
+// increases to b_s/a_s ~ 3.5 with the both addition of bending stiffness E_b = 0.025 and the higher
+// capillary number Ca = 0.2. Conversely, the ratio b_r/a_r ~ 5 ... decreases to ~ 4.6 with ... bending
+// stiffness ... and falls to ~ 4.1 at the higher capillary number".
+ClaimResult claim_5_1_1_ratio_trends(const DissertationResults& res) {
+  ClaimResult r = claim("5.1.1 ratio trends");
+  Parts parts;
+  for (const char* target : k_times) {
+    std::map<std::string, Coefficients> k;
+    std::string why;
+    if (!coefficients(res, {k_base, k_bending, k_large_Ca}, target, k, why)) {
+      part_missing(parts.why, why);
+      continue;
+    }
+    const bool response = std::string(target) == "response.k_tau_s";
+    const std::string name = response ? "b_s/a_s" : "b_r/a_r";
+    const auto ratio = [&](const char* campaign) { return k[campaign].b / k[campaign].a; };
+    for (const char* other : {k_bending, k_large_Ca}) {
+      const bool rises = ratio(other) > ratio(k_base);
+      parts.add(rises == response, name + " " + num(ratio(k_base)) + " -> " + num(ratio(other)) +
+                                       (other == k_bending ? " with E_b 0.025" : " at Ca 0.2"));
+    }
+  }
+  return parts.finish(r);
+}
+
+// Sec. 5.1.1: "The model fit very well for k tau_r, with a correlation coefficient R^2 > 0.99 for all
+// three cases. The model fit more poorly for k tau_s, with R^2 ~ 0.91 ..., ~ 0.96 ... and ~ 0.95".
+ClaimResult claim_5_1_1_fit_quality(const DissertationResults& res) {
+  ClaimResult r = claim("5.1.1 fit quality");
+  Parts parts;
+  std::map<std::string, Coefficients> s, t;
+  std::string why;
+  if (!coefficients(res, {k_base, k_bending, k_large_Ca}, "response.k_tau_s", s, why) ||
+      !coefficients(res, {k_base, k_bending, k_large_Ca}, "recovery.k_tau_r", t, why)) {
+    r.measured = "cannot tell: " + why;
+    return r;
+  }
+  for (const char* campaign : {k_base, k_bending, k_large_Ca})
+    parts.add(t[campaign].r_squared > 0.99 && s[campaign].r_squared < t[campaign].r_squared,
+              std::string(campaign) + ": R^2 k tau_r " + num(t[campaign].r_squared) + ", k tau_s " + num(s[campaign].r_squared));
+  return parts.finish(r);
+}
+
+}  // namespace capsule::analysis::claims
