@@ -37,4 +37,20 @@ std::vector<ClaimResult> evaluate_claims(const DissertationResults& res) {
   return out;
 }
 
+std::vector<std::pair<std::string, ClaimVerdict>> claim_verdicts(const std::vector<ClaimResult>& rows) {
+  std::vector<std::pair<std::string, ClaimVerdict>> out;
+  for (std::size_t i = 0; i < rows.size();) {
+    std::size_t agree = 0, differ = 0, open = 0, j = i;
+    for (; j < rows.size() && rows[j].key == rows[i].key; ++j)
+      ++(rows[j].verdict == Verdict::agrees ? agree : rows[j].verdict == Verdict::differs ? differ : open);
+    const std::size_t n = j - i;
+    out.emplace_back(rows[i].key, agree == n    ? ClaimVerdict::agrees
+                                  : differ == n ? ClaimVerdict::differs
+                                  : open == n   ? ClaimVerdict::cannot_tell
+                                                : ClaimVerdict::in_part);
+    i = j;
+  }
+  return out;
+}
+
 }  // namespace capsule::analysis

@@ -11,6 +11,8 @@
 namespace capsule::analysis {
 
 struct ClaimResult {
+  std::string key;        // the claim in analysis/dissertation/claims.md; one claim may give several
+                          // rows (the circle and the sphere, or two figures)
   std::string section;    // the dissertation's section, e.g. "3.2"
   std::string statement;  // what the text says
   std::string campaign;   // the campaign (and case) that tests it
@@ -22,5 +24,11 @@ struct ClaimResult {
 // Every claim, in the order of the text. Never throws for missing campaigns or members
 // (they give "cannot tell" naming what is missing).
 std::vector<ClaimResult> evaluate_claims(const DissertationResults& results);
+
+// One verdict per claim (key) from its rows, in the order of the text: agrees or differs when
+// every row says so, cannot tell when no row is judged, in part otherwise (rows that disagree,
+// or some rows judged and some not).
+enum class ClaimVerdict { agrees, differs, in_part, cannot_tell };
+std::vector<std::pair<std::string, ClaimVerdict>> claim_verdicts(const std::vector<ClaimResult>& rows);
 
 }  // namespace capsule::analysis

@@ -78,6 +78,12 @@ std::string dissertation_markdown(const DissertationResults& results, const std:
     else if (c.verdict == Verdict::differs) ++s.differs;
     else ++s.cannot_tell;
   }
+  const auto verdicts = claim_verdicts(claims);
+  for (const auto& [key, v] : verdicts)
+    ++(v == ClaimVerdict::agrees    ? s.claims_agree
+       : v == ClaimVerdict::differs ? s.claims_differ
+       : v == ClaimVerdict::in_part ? s.claims_in_part
+                                    : s.claims_cannot_tell);
 
   std::string md;
   md += "# The dissertation beside this toolkit\n\n";
@@ -89,7 +95,11 @@ std::string dissertation_markdown(const DissertationResults& results, const std:
         "resolution ladder the claims judge each physical point at its finest shipped level (the last column of "
         "\"Campaigns read\"), as Table 2 takes the finest level of its bilinear ladder.\n\n";
   md += "## Summary\n\n";
-  md += "- Claims: " + std::to_string(s.agrees) + " agree, " + std::to_string(s.differs) + " differ, " +
+  md += "- Claims: " + std::to_string(s.claims_agree) + " agree, " + std::to_string(s.claims_differ) + " differ, " +
+        std::to_string(s.claims_in_part) + " hold in part, " + std::to_string(s.claims_cannot_tell) + " cannot tell (of " +
+        std::to_string(verdicts.size()) + " claims; in part: the rows of one claim, such as its circle and its sphere, "
+        "disagree, or some cannot tell).\n";
+  md += "- Rows of the claims table: " + std::to_string(s.agrees) + " agree, " + std::to_string(s.differs) + " differ, " +
         std::to_string(s.cannot_tell) + " cannot tell (of " + std::to_string(claims.size()) + ").\n";
   md += "- Table 2 coefficients, statistical 95 % intervals only: " + std::to_string(s.coefficients_overlap) +
         " overlap, " + std::to_string(s.coefficients_disjoint) + " do not, " + std::to_string(s.coefficients_unknown) +

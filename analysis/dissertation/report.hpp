@@ -16,7 +16,8 @@ const std::vector<std::string>& dissertation_campaigns();
 
 struct DissertationSummary {
   std::string file;  // where THESIS.md was written ("" from dissertation_markdown)
-  int agrees = 0, differs = 0, cannot_tell = 0;     // claims
+  int agrees = 0, differs = 0, cannot_tell = 0;     // claim rows (a claim of both the circle and the sphere: two)
+  int claims_agree = 0, claims_differ = 0, claims_in_part = 0, claims_cannot_tell = 0;  // claims (claim_verdicts)
   int coefficients_overlap = 0, coefficients_disjoint = 0, coefficients_unknown = 0;  // Table 2's 18
   // with the ladder's resolution error added to the toolkit's interval (coefficients that have one)
   int coefficients_overlap_with_resolution = 0, coefficients_disjoint_with_resolution = 0;

@@ -137,8 +137,9 @@ int compare_campaign_files(const std::vector<std::string>& campaign_files, bool 
 
 int write_dissertation_comparison(const fs::path& results_dir, const fs::path& out_file, std::ostream& out) {
   const analysis::DissertationSummary s = analysis::write_dissertation(results_dir.string(), out_file.string());
-  out << "wrote " << s.file << "\nclaims: " << s.agrees << " agree, " << s.differs << " differ, " << s.cannot_tell
-      << " cannot tell\nTable 2 coefficients: " << s.coefficients_overlap << " overlap, " << s.coefficients_disjoint
+  out << "wrote " << s.file << "\nclaims: " << s.claims_agree << " agree, " << s.claims_differ << " differ, "
+      << s.claims_in_part << " hold in part, " << s.claims_cannot_tell << " cannot tell (rows: " << s.agrees << " / "
+      << s.differs << " / " << s.cannot_tell << ")\nTable 2 coefficients: " << s.coefficients_overlap << " overlap, " << s.coefficients_disjoint
       << " do not, " << s.coefficients_unknown << " cannot tell (statistical intervals); with the ladder's resolution error: "
       << s.coefficients_overlap_with_resolution << " overlap, " << s.coefficients_disjoint_with_resolution << " do not\n";
   return 0;

@@ -90,6 +90,7 @@ using Fills = std::map<std::string, std::string>;
 inline ClaimResult claim(const std::string& key, const Fills& fills = {}) {
   const ClaimText& t = claim_text(key);
   ClaimResult r;
+  r.key = key;
   r.section = fill_placeholders(t.section, fills, key);
   r.statement = fill_placeholders(t.statement, fills, key);
   r.campaign = fill_placeholders(t.tested_by, fills, key);

@@ -85,3 +85,22 @@ TEST_CASE("every claim of claims.md is judged, with every placeholder filled", "
     CHECK(judged);
   }
 }
+
+TEST_CASE("one verdict per claim from its rows: all agree, all differ, none judged, or in part", "[analysis][dissertation]") {
+  const auto row = [](const std::string& key, Verdict v) {
+    ClaimResult r;
+    r.key = key;
+    r.verdict = v;
+    return r;
+  };
+  const auto verdicts = claim_verdicts({row("a", Verdict::agrees), row("a", Verdict::agrees), row("b", Verdict::differs),
+                                        row("c", Verdict::agrees), row("c", Verdict::differs), row("d", Verdict::cannot_tell),
+                                        row("e", Verdict::agrees), row("e", Verdict::cannot_tell), row("f", Verdict::differs)});
+  REQUIRE(verdicts.size() == 6);
+  CHECK(verdicts[0] == std::make_pair(std::string("a"), ClaimVerdict::agrees));
+  CHECK(verdicts[1].second == ClaimVerdict::differs);
+  CHECK(verdicts[2].second == ClaimVerdict::in_part);      // the circle agrees, the sphere differs
+  CHECK(verdicts[3].second == ClaimVerdict::cannot_tell);
+  CHECK(verdicts[4].second == ClaimVerdict::in_part);      // one row judged, one not
+  CHECK(verdicts[5] == std::make_pair(std::string("f"), ClaimVerdict::differs));
+}
