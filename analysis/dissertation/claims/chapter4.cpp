@@ -337,4 +337,37 @@ ClaimResult claim_4_2_C(const DissertationResults& res) {
   return parts.finish(r);
 }
 
+// Sec. 4.2.2: case A (c0 = -2.09): "negligible change in D_xy ~ 0.545 is observed through t = 40".
+ClaimResult claim_4_2_A_plateau(const DissertationResults& res) {
+  auto [r, c] = open_claim(res, "4.2 A plateau");
+  judge_every(r, res, c, "A_c0_-2.09", "no case A_c0_-2.09 member",
+              [](const Recovery3d& x) -> std::optional<bool> { return std::abs(x.D_end - 0.545) <= 0.02; });
+  return r;
+}
+
+// Sec. 4.2.2: c0 = 0 and -1: "Both the dynamics in shear flow and the relaxation process after flow
+// stops are nearly identical to c0 = -2.09."
+ClaimResult claim_4_2_c0(const DissertationResults& res) {
+  auto [r, c] = open_claim(res, "4.2 c0");
+  if (!c) return r;
+  std::string why;
+  const auto base = recoveries(res, *c, "A_c0_-2.09", why);
+  Parts parts;
+  for (const char* other : {"A_c0_-1", "A_c0_0"})
+    for (const auto& x : recoveries(res, *c, other, why)) {
+      const auto b = std::find_if(base.begin(), base.end(), [&](const Recovery3d& y) { return y.E_b == x.E_b; });
+      if (b == base.end()) {
+        part_missing(parts.why, x.slug + ": no c0 = -2.09 member at E_b " + num(x.E_b));
+        continue;
+      }
+      const double d_stop = x.D_stop - b->D_stop, d_end = x.D_end - b->D_end;
+      parts.add(std::abs(d_stop) <= 0.02 && std::abs(d_end) <= 0.02,
+                x.slug + " against " + b->slug + ": D_stop " + num(x.D_stop) + " (" + num(d_stop) + "), D_end " + num(x.D_end) +
+                    " (" + num(d_end) + ")");
+    }
+  if (!why.empty()) part_missing(parts.why, why);
+  else if (base.empty()) part_missing(parts.why, "no case A_c0_-2.09 member");
+  return parts.finish(r);
+}
+
 }  // namespace capsule::analysis::claims

@@ -144,4 +144,60 @@ ClaimResult claim_4_1_2_eta(const DissertationResults& res) {
   return parts.finish(r);
 }
 
+// Sec. 4.1.1 (Fig. 30): "If phase angle beta is small, then the capsule will recover its shape more
+// quickly than for a larger phase angle" (0.11 against the ensemble's 0.49 rad).
+ClaimResult claim_4_1_1_phase_angle(const DissertationResults& res) {
+  auto [r, c] = open_claim(res, "4.1.1 phase angle");
+  if (!c) return r;
+  const std::string column = std::string(k_tt_fit) + ".k_tau_R2";
+  const auto same_point = [](const DissertationMember& m) {
+    return parameter(m, "Ca") == 0.067 && parameter(m, "E_b") == 0.0014 && parameter(m, "V") == 1.0 && parameter(m, "eta") == 0.0;
+  };
+  const Series small = series(*c, "beta_0.11", "Ca", column, same_point, missed_stop_in(res));
+  const Series base = series(*c, "Ca", "Ca", column, same_point, missed_stop_in(res));
+  if (!have_points(r, small, 1, "beta 0.11 members with k tau_R2") || !have_points(r, base, 1, "base members with k tau_R2"))
+    return r;
+  const double k_small = small.points.front().y, k_base = base.points.front().y;
+  set(r, k_small < k_base, "k tau_R2 " + num(k_small) + " at beta 0.11 against " + num(k_base) + " at 0.49");
+  return r;
+}
+
+// Sec. 4.1.2 (Fig. 31): "After shear flow is stopped ... the Taylor deformation parameter essentially
+// increased or decreased monotonically from D_stop to its initial value".
+ClaimResult claim_4_1_2_monotone(const DissertationResults& res) {
+  auto [r, c] = open_claim(res, "4.1.2 monotone");
+  if (!c) return r;
+  Parts parts;
+  std::size_t n = 0;
+  for (const DissertationMember* m : c->in_case("")) {
+    if (!outside_tumbling_ensemble(res, *m).empty()) continue;
+    std::string why;
+    const auto data = res.member_data(*m, why);
+    if (!data || !data->series.count("kt") || !data->series.count("D_xy")) {
+      part_missing(parts.why, m->slug + ": " + (data ? "no kt / D_xy series" : why));
+      continue;
+    }
+    const auto &kt = data->series.at("kt"), &D = data->series.at("D_xy");
+    const double t_stop = marker(*data, "t_stop");
+    std::size_t i0 = 0;
+    while (i0 < kt.size() && kt[i0] < t_stop) ++i0;
+    if (i0 + 2 >= kt.size()) {
+      part_missing(parts.why, m->slug + ": no recovery rows");
+      continue;
+    }
+    // The largest step back against the recovery's overall direction, from the furthest point reached.
+    const double direction = D.back() >= D[i0] ? 1.0 : -1.0;
+    double furthest = D[i0], back = 0.0;
+    for (std::size_t i = i0; i < D.size(); ++i) {
+      furthest = direction > 0 ? std::max(furthest, D[i]) : std::min(furthest, D[i]);
+      back = std::max(back, direction * (furthest - D[i]));
+    }
+    ++n;
+    parts.add(back <= 0.02, m->slug + " " + (direction > 0 ? "rises" : "falls") + " " + num(D[i0]) + " -> " + num(D.back()) +
+                                ", largest step back " + num(back));
+  }
+  if (n < 3) part_missing(parts.why, std::to_string(n) + " ensemble members with a recovery, need 3");
+  return parts.finish(r);
+}
+
 }  // namespace capsule::analysis::claims

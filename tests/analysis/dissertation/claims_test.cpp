@@ -570,3 +570,92 @@ TEST_CASE("Dissertation claims: a tumbling member whose theta stop never came is
     CHECK(r2.measured.find("Ca0.6 R^2 0.52 (D_xy -0.07 at the stop jumps by 0.67") != std::string::npos);
   }
 }
+
+TEST_CASE("Dissertation claims: case A's plateau near 0.545, and c0 = 0 and -1 nearly identical to -2.09", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_c0");
+  // One member per c0 at E_b 0.025: D_stop and D_end as given.
+  const auto judge = [&](double D_end_base, double D_stop_other, double D_end_other) {
+    const std::map<std::string, std::pair<double, double>> cases{
+        {"A_c0_-2.09", {0.57, D_end_base}}, {"A_c0_-1", {D_stop_other, D_end_other}}, {"A_c0_0", {0.57, D_end_base}}};
+    nlohmann::json members = nlohmann::json::array();
+    for (const auto& [name, d] : cases) {
+      const std::string rel = "members/" + name + "/member.h5";
+      write_table1_member(tmp.path / "ch4_3d_cases" / rel, d.first, d.second, 0.2);
+      members.push_back(member_json(name, name, {{"E_b", 0.025}}, {}, rel));
+    }
+    write_fits(tmp.path, "ch4_3d_cases", members);
+    return evaluate_claims(DissertationResults(tmp.path.string()));
+  };
+  {
+    const auto claims = judge(0.545, 0.575, 0.55);
+    CHECK(find_claim(claims, "4.2", "plateau").verdict == Verdict::agrees);
+    const auto& c0 = find_claim(claims, "4.2", "c0 = 0 and -1");
+    INFO(c0.measured);
+    CHECK(c0.verdict == Verdict::agrees);
+    CHECK(c0.measured.find("A_c0_-1 against A_c0_-2.09: D_stop 0.575 (0.005), D_end 0.55 (0.005)") != std::string::npos);
+  }
+  {
+    const auto claims = judge(0.52, 0.62, 0.55);  // plateau 0.025 below 0.545; c0 = -1 stops 0.05 higher
+    CHECK(find_claim(claims, "4.2", "plateau").verdict == Verdict::differs);
+    CHECK(find_claim(claims, "4.2", "c0 = 0 and -1").verdict == Verdict::differs);
+  }
+}
+
+TEST_CASE("Dissertation claims: the smaller phase angle recovers faster (Fig. 30), tank-treading 2D", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_beta");
+  const auto judge = [&](double k_small) {
+    const std::map<std::string, double> point{{"Ca", 0.067}, {"E_b", 0.0014}, {"V", 1.0}, {"eta", 0.0}};
+    const auto fits = [](double k) {
+      return std::map<std::string, FitResult>{{"two_phase_R2", known_fit("two-phase (88)", {{"k_tau_R2", {k, 0.1}}})}};
+    };
+    write_fits(tmp.path, "ch4_2d_tt",
+               nlohmann::json::array({member_json("base", "Ca", point, fits(24.3)), member_json("beta", "beta_0.11", point, fits(k_small))}));
+    return find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "4.1.1", "smaller phase angle");
+  };
+  CHECK(judge(13.5).verdict == Verdict::agrees);
+  CHECK(judge(30.0).verdict == Verdict::differs);
+  CHECK(judge(13.5).measured == "k tau_R2 13.5 at beta 0.11 against 24.3 at 0.49");
+}
+
+TEST_CASE("Dissertation claims: a tumbling recovery that steps back by more than 0.02 is not monotone (Fig. 31)", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_monotone");
+  // Members stopped at theta = -pi/3 at kt 10, recovering 0.5 -> 0.8; `dip`: D_xy first falls by
+  // `dip` over half a kt. With `capped`, the third member's stop never came (not counted).
+  const auto judge = [&](double dip, bool capped) {
+    nlohmann::json members = nlohmann::json::array();
+    for (int i = 0; i < 3; ++i) {
+      const std::string slug = "m" + std::to_string(i), rel = "members/" + slug + "/member.h5";
+      const auto file = tmp.path / "ch4_2d_tumble" / rel;
+      if (capped && i == 2) {
+        write_tumble_member(file, 50.0);
+      } else {
+        std::filesystem::create_directories(file.parent_path());
+        capsule::io::MemberWriter w(file.string());
+        w.set_scene({{"dim", 2}, {"Ca", 0.4}, {"shape", "biconcave"},
+                     {"protocol", {{"shear", {{"until", "theta"}, {"value", -M_PI / 3}, {"max_kt", 50.0}}},
+                                   {"recover", {{"until", "time"}, {"kt", 20.0}}}}}});
+        for (int k = 0; k <= 600; ++k) {
+          const double t = k / 20.0, after = t - 10.0;
+          double D = 0.5;
+          if (after > 0) D = 0.8 - 0.3 * std::exp(-after / 2.0) - (i == 0 ? dip * std::sin(M_PI * std::min(after, 1.0)) : 0.0);
+          w.append({{"kt", t}, {"D_xy", D}, {"theta", after > 0 ? 0.2 : -0.5}, {"shear_on", after > 0 ? 0.0 : 1.0}});
+        }
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        w.set_markers({{"t_max", nan}, {"D_max", nan}, {"t_stop", 10.0}, {"D_stop", 0.5}, {"t_min", nan}, {"D_min", nan},
+                       {"t_end", 30.0}, {"D_inf", 0.8}});
+        w.finish("complete");
+      }
+      members.push_back(member_json(slug, "", {{"Ca", 0.4}}, {}, rel));
+    }
+    write_fits(tmp.path, "ch4_2d_tumble", members);
+    return find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "4.1.2", "monotonically");
+  };
+  const auto smooth = judge(0.0, false);
+  INFO(smooth.measured);
+  CHECK(smooth.verdict == Verdict::agrees);
+  CHECK(smooth.measured.find("m0 rises 0.5 -> ") != std::string::npos);
+  CHECK(judge(0.2, false).verdict == Verdict::differs);  // a dip of D_xy right after the stop
+  const auto capped = judge(0.0, true);
+  CHECK(capped.verdict == Verdict::cannot_tell);  // two counted members, need 3
+  CHECK(capped.measured.find("2 ensemble members with a recovery, need 3") != std::string::npos);
+}
