@@ -307,34 +307,51 @@ ClaimResult claim_4_2_B(const DissertationResults& res) {
   return r;
 }
 
+// Each member of the cases named by `prefixes` judged against the members of `against` at its E_b:
+// `judge(x, partners, text)` says whether x holds and writes its numbers. A member without a
+// partner, a member file that cannot be read, or no member at all leave the claim undecided.
+template <class Judge>
+ClaimResult judge_against(ClaimResult r, const DissertationResults& res, const DissertationCampaign& c,
+                          const std::vector<std::string>& prefixes, const std::string& against, Judge judge) {
+  std::string why;
+  const auto partners_all = recoveries(res, c, against, why);
+  Parts parts;
+  std::size_t n = 0;
+  for (const auto& prefix : prefixes)
+    for (const auto& x : recoveries(res, c, prefix, why)) {
+      ++n;
+      std::vector<Recovery3d> partners;
+      for (const auto& p : partners_all)
+        if (p.E_b == x.E_b) partners.push_back(p);
+      if (partners.empty()) {
+        part_missing(parts.why, x.slug + ": no " + against + " member at E_b " + num(x.E_b));
+        continue;
+      }
+      std::string text;
+      const bool holds = judge(x, partners, text);
+      parts.add(holds, text);
+    }
+  if (!why.empty()) part_missing(parts.why, why);
+  else if (n == 0) part_missing(parts.why, "no case " + prefixes.front() + " member");
+  return parts.finish(r);
+}
+
 // Sec. 4.2.4: case C (spherical reference): "gets closer to recovering its initial shape than
 // any capsule in Case A ... beta values ... remained basically constant".
 ClaimResult claim_4_2_C(const DissertationResults& res) {
   auto [r, c] = open_claim(res, "4.2 C");
   if (!c) return r;
-  std::string why;
-  const auto rc = recoveries(res, *c, "C", why);
-  const auto ra = recoveries(res, *c, "A_", why);
   const auto distance = [](const Recovery3d& x) { return std::abs(x.D_end - k_D_biconcave_3d); };
-  Parts parts;
-  for (const auto& x : rc) {
-    std::string against;
+  return judge_against(r, res, *c, {"C"}, "A_", [&](const Recovery3d& x, const std::vector<Recovery3d>& as, std::string& text) {
     bool nearer = true;
-    for (const auto& a : ra) {
-      if (a.E_b != x.E_b) continue;
+    std::string against;
+    for (const auto& a : as) {
       nearer = nearer && distance(x) < distance(a);
       against += (against.empty() ? "" : ", ") + a.slug + " " + num(distance(a));
     }
-    if (against.empty()) {
-      part_missing(parts.why, x.slug + ": no case A member at E_b " + num(x.E_b));
-      continue;
-    }
-    parts.add(nearer && x.no_memory(), x.text() + ", |D_end - 0.51| " + num(distance(x)) + " against " + against);
-  }
-  // A member whose file cannot be read leaves "every C member" undecided.
-  if (!why.empty()) part_missing(parts.why, why);
-  else if (rc.empty()) part_missing(parts.why, "no case C member");
-  return parts.finish(r);
+    text = x.text() + ", |D_end - 0.51| " + num(distance(x)) + " against " + against;
+    return nearer && x.no_memory();
+  });
 }
 
 // Sec. 4.2.2: case A (c0 = -2.09): "negligible change in D_xy ~ 0.545 is observed through t = 40".
@@ -350,24 +367,14 @@ ClaimResult claim_4_2_A_plateau(const DissertationResults& res) {
 ClaimResult claim_4_2_c0(const DissertationResults& res) {
   auto [r, c] = open_claim(res, "4.2 c0");
   if (!c) return r;
-  std::string why;
-  const auto base = recoveries(res, *c, "A_c0_-2.09", why);
-  Parts parts;
-  for (const char* other : {"A_c0_-1", "A_c0_0"})
-    for (const auto& x : recoveries(res, *c, other, why)) {
-      const auto b = std::find_if(base.begin(), base.end(), [&](const Recovery3d& y) { return y.E_b == x.E_b; });
-      if (b == base.end()) {
-        part_missing(parts.why, x.slug + ": no c0 = -2.09 member at E_b " + num(x.E_b));
-        continue;
-      }
-      const double d_stop = x.D_stop - b->D_stop, d_end = x.D_end - b->D_end;
-      parts.add(std::abs(d_stop) <= 0.02 && std::abs(d_end) <= 0.02,
-                x.slug + " against " + b->slug + ": D_stop " + num(x.D_stop) + " (" + num(d_stop) + "), D_end " + num(x.D_end) +
-                    " (" + num(d_end) + ")");
-    }
-  if (!why.empty()) part_missing(parts.why, why);
-  else if (base.empty()) part_missing(parts.why, "no case A_c0_-2.09 member");
-  return parts.finish(r);
+  return judge_against(r, res, *c, {"A_c0_-1", "A_c0_0"}, "A_c0_-2.09",
+                       [](const Recovery3d& x, const std::vector<Recovery3d>& base, std::string& text) {
+                         const Recovery3d& b = base.front();
+                         const double d_stop = x.D_stop - b.D_stop, d_end = x.D_end - b.D_end;
+                         text = x.slug + " against " + b.slug + ": D_stop " + num(x.D_stop) + " (" + num(d_stop) +
+                                "), D_end " + num(x.D_end) + " (" + num(d_end) + ")";
+                         return std::abs(d_stop) <= 0.02 && std::abs(d_end) <= 0.02;
+                       });
 }
 
 }  // namespace capsule::analysis::claims
