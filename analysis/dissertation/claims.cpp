@@ -34,7 +34,7 @@ std::vector<ClaimResult> evaluate_claims(const DissertationResults& res) {
   out.push_back(claim_5_1_2(res, "ch5_bilinear_ca005_eb", 1.0, "Fig. 56"));
   out.push_back(claim_5_2_pairs(res, true));
   out.push_back(claim_5_2_pairs(res, false));
-  once(claim_5_2_mesh), once(claim_5_2_gamma);
+  once(claim_5_2_n), once(claim_5_2_mesh), once(claim_5_2_gamma);
   return out;
 }
 

@@ -1,5 +1,7 @@
 // The claims of the dissertation's Chapter 5 (membrane viscosity), each a rule with a stated numeric
 // criterion (claims/support.hpp).
+#include <limits>
+
 #include "analysis/dissertation/claims/chapters.hpp"
 #include "analysis/dissertation/claims/support.hpp"
 
@@ -161,6 +163,52 @@ ClaimResult claim_5_2_pairs(const DissertationResults& res, bool initial) {
     return r;
   }
   set(r, ok, text);
+  return r;
+}
+
+// Sec. 5.2.1 (Fig. 60): "As n decreases from one toward zero, the membrane viscosity increases and
+// capsule deformation is restricted." The power law moves with resolution (docs/findings), so
+// the order is judged at the finest level and, where the ladder has one, at the next coarser:
+// a verdict the two levels do not share cannot be decided.
+ClaimResult claim_5_2_n(const DissertationResults& res) {
+  auto [r, found] = open_claim(res, "5.2.1 n");
+  if (!found) return r;
+  const DissertationCampaign& c = *found;
+  std::string why;
+  auto members = shear_members(res, c, "n", why);
+  if (members.size() < 3) {
+    r.measured = "cannot tell (members missing): " + std::to_string(members.size()) + " values of n with a member file, need 3" +
+                 (why.empty() ? std::string("") : " (" + why + ")");
+    return r;
+  }
+  const auto n_of = [](const ShearMember& m) { return scene_value(*m.data, "/power_law/n"); };
+  std::sort(members.begin(), members.end(), [&](const ShearMember& a, const ShearMember& b) { return n_of(a) > n_of(b); });
+  const auto value = [](const ShearMember* m) { return m->D_stop; };
+  std::vector<double> fine, coarse;
+  std::string level, text, coarse_text;
+  for (const auto& m : members) {
+    fine.push_back(m.D_stop);
+    text += (text.empty() ? "" : ", ") + std::string("n ") + num(n_of(m)) + ": " + num(m.D_stop);
+    if (const auto shift = resolution_shift(res, c, m, value)) {
+      coarse.push_back(shift->coarse_value);
+      level = shift->key + " " + num(shift->coarse_level) + " / " + num(shift->fine_level);
+      coarse_text += (coarse_text.empty() ? "" : ", ") + num(shift->coarse_value);
+    }
+  }
+  const auto falls = [](const std::vector<double>& d) {
+    for (std::size_t i = 1; i < d.size(); ++i)
+      if (!(d[i] < d[i - 1])) return false;
+    return true;
+  };
+  text = "D_xy at the stop: " + text;
+  if (coarse.size() == fine.size()) {
+    text += "; next coarser level (" + level + "): " + coarse_text;
+    if (falls(coarse) != falls(fine)) {
+      r.measured = "cannot tell (the two finest levels disagree): " + text;
+      return r;
+    }
+  }
+  set(r, falls(fine), text);
   return r;
 }
 

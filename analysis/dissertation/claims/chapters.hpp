@@ -50,6 +50,7 @@ ClaimResult claim_5_1_1_similar(const DissertationResults& res);
 ClaimResult claim_5_1_1_ratio_trends(const DissertationResults& res);
 ClaimResult claim_5_1_2(const DissertationResults& res, const std::string& campaign, double V_base, const std::string& figure);
 ClaimResult claim_5_2_pairs(const DissertationResults& res, bool initial);
+ClaimResult claim_5_2_n(const DissertationResults& res);
 ClaimResult claim_5_2_mesh(const DissertationResults& res);
 ClaimResult claim_5_2_gamma(const DissertationResults& res);
 

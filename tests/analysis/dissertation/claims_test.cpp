@@ -63,10 +63,10 @@ void write_ch4_2d_tt(const std::filesystem::path& dir, const std::string& path) 
 
 // A ch5_powerlaw member: D_xy rises as D_steady (1 - exp(-kt / 0.8)) under shear until kt 10.
 // Its scene names power_law.K (0 for Kelvin-Voigt) and, where given, conventions.sls_viscosity.
-void write_shear_member(const std::filesystem::path& file, double K, const std::string& sls, double D_steady) {
+void write_shear_member(const std::filesystem::path& file, double K, const std::string& sls, double D_steady, double n = 0.64) {
   std::filesystem::create_directories(file.parent_path());
   capsule::io::MemberWriter w(file.string());
-  nlohmann::json scene{{"dim", 3}, {"Ca", 0.1}, {"E_b", 0.0}, {"V", 1.0}, {"power_law", {{"K", K}, {"n", 0.64}}}};
+  nlohmann::json scene{{"dim", 3}, {"Ca", 0.1}, {"E_b", 0.0}, {"V", 1.0}, {"power_law", {{"K", K}, {"n", n}}}};
   if (!sls.empty()) scene["conventions"] = {{"sls_viscosity", sls}};
   w.set_scene(scene);
   for (int i = 0; i <= 200; ++i) {
@@ -658,4 +658,33 @@ TEST_CASE("Dissertation claims: a tumbling recovery that steps back by more than
   const auto capped = judge(0.0, true);
   CHECK(capped.verdict == Verdict::cannot_tell);  // two counted members, need 3
   CHECK(capped.measured.find("2 ensemble members with a recovery, need 3") != std::string::npos);
+}
+
+TEST_CASE("Dissertation claims: the n sweep deforms less as n falls (Fig. 60), judged at the two finest levels", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_n");
+  const auto dir = tmp.path / "ch5_powerlaw";
+  // Three values of n at a = 7 (D_fine) and a = 5 (D_coarse), a resolution.a ladder.
+  const auto judge = [&](const std::vector<double>& D_fine, const std::vector<double>& D_coarse) {
+    const std::vector<double> ns{1.0, 0.64, 0.32};
+    nlohmann::json m = nlohmann::json::array();
+    for (std::size_t i = 0; i < ns.size(); ++i)
+      for (const double a : {7.0, 5.0}) {
+        const std::string slug = "n" + std::to_string(i) + "-a" + std::to_string(int(a)), rel = "members/" + slug + "/member.h5";
+        write_shear_member(dir / rel, 10.0, "", a == 7.0 ? D_fine[i] : D_coarse[i], ns[i]);
+        m.push_back(member_json(slug, "n", {{"power_law.n", ns[i]}, {"resolution.a", a}}, {}, rel));
+      }
+    const nlohmann::json analysis{{"fits", {"response"}}, {"ladder", {{{"key", "resolution.a"}, {"quantities", {"response.k_tau_s"}}}}}};
+    write_fits(tmp.path, "ch5_powerlaw", m, nlohmann::json::array(), analysis);
+    return find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "5.2.1", "index n falls");
+  };
+  const ClaimResult both = judge({0.26, 0.22, 0.19}, {0.22, 0.17, 0.13});
+  INFO(both.measured);
+  CHECK(both.verdict == Verdict::agrees);
+  CHECK(both.measured.find("n 1: 0.26, n 0.64: 0.22, n 0.32: 0.19; next coarser level (resolution.a 5 / 7): 0.22, 0.17, 0.13") !=
+        std::string::npos);
+  CHECK(judge({0.19, 0.22, 0.26}, {0.13, 0.17, 0.22}).verdict == Verdict::differs);
+  const ClaimResult split = judge({0.26, 0.22, 0.19}, {0.17, 0.22, 0.13});  // the coarse level is out of order
+  INFO(split.measured);
+  CHECK(split.verdict == Verdict::cannot_tell);
+  CHECK(split.measured.find("the two finest levels disagree") != std::string::npos);
 }
