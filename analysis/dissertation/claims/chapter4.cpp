@@ -377,4 +377,21 @@ ClaimResult claim_4_2_c0(const DissertationResults& res) {
                        });
 }
 
+// Sec. 4.2.4 (Fig. 52): case C "during the deformation in shear flow (t <= 15), the capsule seems to
+// lack the characteristic periodic behaviour typical of three dimensional biconcave capsules".
+ClaimResult claim_4_2_C_steady(const DissertationResults& res) {
+  auto [r, c] = open_claim(res, "4.2 C steady");
+  if (!c) return r;
+  Parts parts;
+  const auto swing = [&](const DissertationMember& m, const Curve& curve) {
+    double lo = 1e300, hi = -1e300;
+    for (std::size_t i = 0; i < curve.stop_row; ++i)
+      if (curve.kt[i] >= 0.5 * curve.t_stop) lo = std::min(lo, curve.D[i]), hi = std::max(hi, curve.D[i]);
+    parts.add(hi - lo <= 0.01, m.slug + ": D_xy " + num(lo) + " to " + num(hi) + " over kt " + num(0.5 * curve.t_stop) + "-" +
+                                   num(curve.t_stop) + " (swing " + num(hi - lo) + ")");
+  };
+  if (judge_curves(res, *c, "C", parts, true, {}, swing) == 0 && parts.why.empty()) part_missing(parts.why, "no case C member");
+  return parts.finish(r);
+}
+
 }  // namespace capsule::analysis::claims

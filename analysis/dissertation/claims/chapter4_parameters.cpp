@@ -168,23 +168,10 @@ ClaimResult claim_4_1_2_monotone(const DissertationResults& res) {
   auto [r, c] = open_claim(res, "4.1.2 monotone");
   if (!c) return r;
   Parts parts;
-  std::size_t n = 0;
-  for (const DissertationMember* m : c->in_case("")) {
-    if (!outside_tumbling_ensemble(res, *m).empty()) continue;
-    std::string why;
-    const auto data = res.member_data(*m, why);
-    if (!data || !data->series.count("kt") || !data->series.count("D_xy")) {
-      part_missing(parts.why, m->slug + ": " + (data ? "no kt / D_xy series" : why));
-      continue;
-    }
-    const auto &kt = data->series.at("kt"), &D = data->series.at("D_xy");
-    const double t_stop = marker(*data, "t_stop");
-    std::size_t i0 = 0;
-    while (i0 < kt.size() && kt[i0] < t_stop) ++i0;
-    if (i0 + 2 >= kt.size()) {
-      part_missing(parts.why, m->slug + ": no recovery rows");
-      continue;
-    }
+  const std::size_t n = judge_curves(res, *c, "", parts, false, outside_tumbling_ensemble_in(res),
+                                     [&](const DissertationMember& m, const Curve& curve) {
+    const auto& D = curve.D;
+    const std::size_t i0 = curve.stop_row;
     // The largest step back against the recovery's overall direction, from the furthest point reached.
     const double direction = D.back() >= D[i0] ? 1.0 : -1.0;
     double furthest = D[i0], back = 0.0;
@@ -192,10 +179,9 @@ ClaimResult claim_4_1_2_monotone(const DissertationResults& res) {
       furthest = direction > 0 ? std::max(furthest, D[i]) : std::min(furthest, D[i]);
       back = std::max(back, direction * (furthest - D[i]));
     }
-    ++n;
-    parts.add(back <= 0.02, m->slug + " " + (direction > 0 ? "rises" : "falls") + " " + num(D[i0]) + " -> " + num(D.back()) +
+    parts.add(back <= 0.02, m.slug + " " + (direction > 0 ? "rises" : "falls") + " " + num(D[i0]) + " -> " + num(D.back()) +
                                 ", largest step back " + num(back));
-  }
+  });
   if (n < 3) part_missing(parts.why, std::to_string(n) + " ensemble members with a recovery, need 3");
   return parts.finish(r);
 }

@@ -42,6 +42,7 @@ ClaimResult claim_4_1_1_phase_angle(const DissertationResults& res);
 ClaimResult claim_4_1_2_monotone(const DissertationResults& res);
 ClaimResult claim_4_2_A_plateau(const DissertationResults& res);
 ClaimResult claim_4_2_c0(const DissertationResults& res);
+ClaimResult claim_4_2_C_steady(const DissertationResults& res);
 ClaimResult claim_4_2_A(const DissertationResults& res);
 ClaimResult claim_4_2_B(const DissertationResults& res);
 ClaimResult claim_4_2_C(const DissertationResults& res);

@@ -304,6 +304,46 @@ struct ShearMember {
   double D_at_1 = k_nan, D_stop = k_nan;
 };
 
+// A member's D_xy(kt) and its stop time (the file read once); nullopt, with the reason added to
+// `why` (part_missing), when the file or its series is missing or it has no row after the stop.
+struct Curve {
+  std::vector<double> kt, D;
+  double t_stop = k_nan;
+  std::size_t stop_row = 0;  // the first row at or after the stop
+};
+inline std::optional<Curve> member_curve(const DissertationResults& res, const DissertationMember& m, std::string& why,
+                                         bool accept_unstable = false) {
+  std::string reason;
+  const auto data = res.member_data(m, reason, accept_unstable);
+  if (!data || !data->series.count("kt") || !data->series.count("D_xy")) {
+    part_missing(why, m.slug + ": " + (data ? "no kt / D_xy series" : reason));
+    return std::nullopt;
+  }
+  Curve c{data->series.at("kt"), data->series.at("D_xy"), marker(*data, "t_stop")};
+  while (c.stop_row < c.kt.size() && c.kt[c.stop_row] < c.t_stop) ++c.stop_row;
+  if (c.stop_row + 2 >= c.kt.size()) {
+    part_missing(why, m.slug + ": no recovery rows");
+    return std::nullopt;
+  }
+  return c;
+}
+
+// Calls judge(member, curve) for each member of a case whose curve can be read and that `skip`
+// does not leave out (the unreadable ones are added to parts.why); returns how many it judged.
+template <class Judge>
+std::size_t judge_curves(const DissertationResults& res, const DissertationCampaign& c, const std::string& case_name,
+                         Parts& parts, bool accept_unstable, const Skip& skip, Judge judge) {
+  std::size_t n = 0;
+  for (const DissertationMember* m : c.in_case(case_name)) {
+    if (skip && !skip(*m).empty()) continue;
+    const auto curve = member_curve(res, *m, parts.why, accept_unstable);
+    if (!curve) continue;
+    ++n;
+    judge(*m, *curve);
+  }
+  return n;
+}
+
 // A member's D_xy at kt 1 and at the stop (its last row without a t_stop); nullopt with `why`
 // set when the file or its kt / D_xy series is missing.
 inline std::optional<ShearMember> shear_member(const DissertationResults& res, const DissertationMember& m, std::string& why) {

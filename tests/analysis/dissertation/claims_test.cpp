@@ -82,13 +82,14 @@ void write_shear_member(const std::filesystem::path& file, double K, const std::
 
 // A ch4_3d_cases member: shear until kt 15 with D_xy = D_stop at the stop, then D_xy relaxes
 // to D_end by kt 65; two tracked elements whose phase distance falls from 0.8 to `phase_end`.
-void write_table1_member(const std::filesystem::path& file, double D_stop, double D_end, double phase_end) {
+// `swing`: D_xy swings by that much (peak to peak) during the shear, as a tank-treading biconcave capsule's.
+void write_table1_member(const std::filesystem::path& file, double D_stop, double D_end, double phase_end, double swing = 0.0) {
   std::filesystem::create_directories(file.parent_path());
   capsule::io::MemberWriter w(file.string());
   w.set_scene({{"dim", 3}, {"Ca", 0.5}, {"E_b", 0.025}, {"V", 2.0}, {"shape", "biconcave"}});
   for (int i = 0; i <= 650; ++i) {
     const double t = 0.1 * i, s = t <= 15.0 ? 0.0 : 1.0 - std::exp(-(t - 15.0) / 5.0);
-    const double D = t <= 15.0 ? D_stop : D_stop + (D_end - D_stop) * s;
+    const double D = t <= 15.0 ? D_stop + 0.5 * swing * std::sin(2 * M_PI * t / 3.0) : D_stop + (D_end - D_stop) * s;
     const double phase = 0.8 + (phase_end - 0.8) * s;
     w.append({{"kt", t}, {"D_xy", D}, {"theta", 0.3}, {"shear_on", t <= 15.0 ? 1.0 : 0.0}}, {phase, -phase});
   }
@@ -687,4 +688,18 @@ TEST_CASE("Dissertation claims: the n sweep deforms less as n falls (Fig. 60), j
   INFO(split.measured);
   CHECK(split.verdict == Verdict::cannot_tell);
   CHECK(split.measured.find("the two finest levels disagree") != std::string::npos);
+}
+
+TEST_CASE("Dissertation claims: case C's D_xy does not swing during the shear (Fig. 52)", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_c_steady");
+  const auto judge = [&](double swing) {
+    write_table1_member(tmp.path / "ch4_3d_cases/members/C/member.h5", 0.58, 0.52, 0.78, swing);
+    write_fits(tmp.path, "ch4_3d_cases", nlohmann::json::array({member_json("C", "C", {{"E_b", 0.025}}, {}, "members/C/member.h5")}));
+    return find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "4.2", "periodic swing");
+  };
+  const auto steady = judge(0.0);
+  INFO(steady.measured);
+  CHECK(steady.verdict == Verdict::agrees);
+  CHECK(steady.measured.find("over kt 7.5-15 (swing 0)") != std::string::npos);
+  CHECK(judge(0.05).verdict == Verdict::differs);
 }
