@@ -124,7 +124,8 @@ int main_body(int argc, char** argv) {
 
   std::string thesis_out;
   auto* thesis = app.add_subcommand(
-      "thesis", "write THESIS.md: Table 2, the ratios b/a and the claims of Chapters 3-5 against the shipped results");
+      "thesis", "write THESIS.md: Table 2, the ratios b/a and the claims of Chapters 2-5 against the shipped results");
+  thesis->alias("dissertation");  // the word the documents and the code use; `thesis` stays for THESIS.md's users
   thesis->add_option("--results", results_dir, "results folder (reads <results>/<campaign>/report/fits.json)")
       ->capture_default_str();
   thesis->add_option("-o,--output", thesis_out, "file to write (default: <results>/THESIS.md)");

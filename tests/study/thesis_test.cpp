@@ -23,5 +23,11 @@ TEST_CASE("study thesis writes THESIS.md from a results folder with no campaign 
   const std::string md = testing::read_text(dir / "out" / "T.md");
   CHECK(md.find("cannot tell (campaign ch5_bilinear_ca005 not run") != std::string::npos);
   CHECK(md.find("## Known causes of disagreement") != std::string::npos);
+
+  // `study dissertation` is the same command under the word the documents use.
+  const auto alias = testing::run_study({"dissertation", "-o", "out/D.md"}, dir);
+  INFO(alias.output);
+  CHECK(alias.exit_code == 0);
+  CHECK(testing::read_text(dir / "out" / "D.md") == testing::read_text(dir / "results" / "THESIS.md"));
   fs::remove_all(dir);
 }
