@@ -2,6 +2,7 @@
 // they fit, and how their coefficients move with E_b and Ca, each a rule with a stated numeric
 // criterion (claims/support.hpp). Table 2's numbers themselves are compared in table2.cpp.
 #include "analysis/compare/bilinear_entries.hpp"
+#include "analysis/dissertation/table2.hpp"
 #include "analysis/dissertation/claims/chapters.hpp"
 #include "analysis/dissertation/claims/support.hpp"
 
@@ -113,6 +114,32 @@ ClaimResult claim_5_1_1_fit_quality(const DissertationResults& res) {
   for (const char* campaign : {k_base, k_bending, k_large_Ca})
     parts.add(t[campaign].r_squared > 0.99 && s[campaign].r_squared < t[campaign].r_squared,
               std::string(campaign) + ": R^2 k tau_r " + num(t[campaign].r_squared) + ", k tau_s " + num(s[campaign].r_squared));
+  return parts.finish(r);
+}
+
+// Sec. 5.1.1: "b_s/a_s ~ 2.8 ... increases to b_s/a_s ~ 3.5 ... b_r/a_r ~ 5 ... ~ 4.6 ... ~ 4.1" (the
+// ratios the text quotes, each a number the toolkit's b/a and its 95 % interval can hold or not).
+ClaimResult claim_5_1_1_ratios(const DissertationResults& res) {
+  ClaimResult r = claim("5.1.1 ratios");
+  Parts parts;
+  for (const auto& row : compare_table2_rows(res)) {
+    if (!row.ensemble) continue;
+    const bool response = row.reference->target == "k_tau_s";
+    const std::string name = std::string(response ? "b_s/a_s" : "b_r/a_r") + " at Ca " + num(row.ensemble->Ca) + ", E_b " +
+                             num(row.ensemble->E_b);
+    const double quoted = response ? row.ensemble->text_ratio_response : row.ensemble->text_ratio_recovery;
+    if (!row.found) {
+      part_missing(parts.why, name + ": " + row.why);
+      continue;
+    }
+    const RatioInterval mine = ratio_b_over_a_interval(row.entry.fit);
+    if (!mine.ok) {
+      part_missing(parts.why, name + ": " + mine.why);
+      continue;
+    }
+    parts.add(std::abs(mine.value - quoted) <= mine.half_width,
+              name + ": text ~ " + num(quoted) + ", toolkit " + plus_minus(mine.value, mine.half_width));
+  }
   return parts.finish(r);
 }
 

@@ -49,6 +49,7 @@ ClaimResult claim_4_2_C(const DissertationResults& res);
 ClaimResult claim_5_1_1_fit_quality(const DissertationResults& res);
 ClaimResult claim_5_1_1_similar(const DissertationResults& res);
 ClaimResult claim_5_1_1_ratio_trends(const DissertationResults& res);
+ClaimResult claim_5_1_1_ratios(const DissertationResults& res);
 ClaimResult claim_5_1_2(const DissertationResults& res, const std::string& campaign, double V_base, const std::string& figure);
 ClaimResult claim_5_2_pairs(const DissertationResults& res, bool initial);
 ClaimResult claim_5_2_n(const DissertationResults& res);

@@ -46,6 +46,10 @@ TEST_CASE("Sec. 5.1.1 claims: bilinear fit quality, similar a_s and b_s, and the
     INFO(t.measured);
     CHECK(t.verdict == Verdict::agrees);
     CHECK(t.measured.find("b_s/a_s 2.84 -> 3.5 at Ca 0.2") != std::string::npos);
+    // Each quoted ratio lies inside b/a's interval (10 % half-widths on a and b: about 14 % on b/a).
+    const auto& q6 = find_claim(claims, "5.1.1", "b_s/a_s ~ 2.8, 3.5, 3.5");
+    INFO(q6.measured);
+    CHECK(q6.verdict == Verdict::agrees);
   }
   SECTION("a poor k tau_r fit, a_s halved with bending, and b_s/a_s falling at Ca 0.2 differ") {
     write_ensemble(tmp, "ch5_bilinear_ca005", 0.05, 0.0, 0.0208, 0.0590, 0.91, 0.0534, 0.2711, 0.98);
@@ -55,6 +59,7 @@ TEST_CASE("Sec. 5.1.1 claims: bilinear fit quality, similar a_s and b_s, and the
     CHECK(find_claim(claims, "5.1.1", "fits k tau_r very well").verdict == Verdict::differs);
     CHECK(find_claim(claims, "5.1.1", "surprisingly similar").verdict == Verdict::differs);
     CHECK(find_claim(claims, "5.1.1", "b_s/a_s rises").verdict == Verdict::differs);
+    CHECK(find_claim(claims, "5.1.1", "b_s/a_s ~ 2.8, 3.5, 3.5").verdict == Verdict::differs);  // 6.4 +- 0.9 against 3.5
   }
   SECTION("the Ca = 0.2 ensemble not run: the two claims that need it cannot tell") {
     write_ensemble(tmp, "ch5_bilinear_ca005", 0.05, 0.0, 0.0208, 0.0590, 0.91, 0.0534, 0.2711, 0.995);
@@ -63,5 +68,6 @@ TEST_CASE("Sec. 5.1.1 claims: bilinear fit quality, similar a_s and b_s, and the
     CHECK(find_claim(claims, "5.1.1", "fits k tau_r very well").verdict == Verdict::cannot_tell);
     CHECK(find_claim(claims, "5.1.1", "b_s/a_s rises").verdict == Verdict::cannot_tell);
     CHECK(find_claim(claims, "5.1.1", "surprisingly similar").verdict == Verdict::agrees);
+    CHECK(find_claim(claims, "5.1.1", "b_s/a_s ~ 2.8, 3.5, 3.5").verdict == Verdict::cannot_tell);
   }
 }
