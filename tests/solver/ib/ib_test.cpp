@@ -362,15 +362,15 @@ TEST_CASE("the spreading box spreads as spread<3> and clears exactly what it wro
   // Nodes placed across the periodic seams in x and z and near a wall in y: the box must wrap
   // in x and z and clip in y. The force field is first filled with a marker everywhere, then
   // cleared; the spreading is compared with spread<3> bitwise (the same code, the same order).
-  const Grid g{12, 10, 9};
+  const Grid g{16, 10, 14};
   std::mt19937 rng(3);
-  std::uniform_real_distribution<double> around(-2.5, 2.5), y(0.5, 4.0);
+  std::uniform_real_distribution<double> around(-1.2, 1.2), y(0.5, 4.0);
   const std::size_t n = 30;
   std::vector<double> X(3 * n), F(3 * n);
   for (std::size_t c = 0; c < n; ++c) {
     X[3 * c] = around(rng);           // both sides of x = 0
     X[3 * c + 1] = y(rng);            // near the wall y = 0: part of each stencil is dropped
-    X[3 * c + 2] = 9.0 + around(rng);  // both sides of z = nz
+    X[3 * c + 2] = 14.0 + around(rng);  // both sides of z = nz
     for (int d = 0; d < 3; ++d) F[3 * c + d] = std::cos(double(3 * c + d));
   }
   for (Kernel k : {Kernel::peskin4, Kernel::roma3, Kernel::linear2}) {
@@ -404,16 +404,18 @@ TEST_CASE("the spreading box spreads as spread<3> and clears exactly what it wro
 }
 
 TEST_CASE("the spreading box clears the whole field when the stencils span the periodic z axis", "[ib]") {
-  // Stencils that would wrap onto themselves in z: no box, the next clearing takes everything.
-  const Grid g{8, 8, 6};
-  std::vector<double> X{4.0, 4.0, 0.7, 4.0, 4.0, 3.9}, F{1.0, 2.0, 3.0, -1.0, 0.5, 0.25};
+  // A box wider than the lattice in z would wrap onto itself: no box, the next clearing takes
+  // everything. The box is the nodes' bounding box widened by 3 (support_rows): z 0.7 alone gives
+  // layers -3..3 (7 <= nz = 10), with z 5.9 as well -3..8 (12 > 10).
+  const Grid g{8, 8, 10};
+  std::vector<double> X{4.0, 4.0, 0.7, 4.0, 4.0, 5.9}, F{1.0, 2.0, 3.0, -1.0, 0.5, 0.25};
   std::vector<double> a0(g.size(), 5.0), a1(g.size(), 5.0), a2(g.size(), 5.0);
   double* p[3] = {a0.data(), a1.data(), a2.data()};
   SpreadingBox box;
   box.spread(g, X.data(), F.data(), 1, p, Kernel::peskin4);  // one node: a box
   box.clear_last(g, p);
   REQUIRE(a0[g.index(0, 0, 3)] == 5.0);  // far from the node in x and y: outside the box
-  box.spread(g, X.data(), F.data(), 2, p, Kernel::peskin4);  // z stencils 7 layers > nz = 6
+  box.spread(g, X.data(), F.data(), 2, p, Kernel::peskin4);  // a box 12 layers tall
   box.clear_last(g, p);
   for (std::size_t i = 0; i < g.size(); ++i) REQUIRE((a0[i] == 0.0 && a1[i] == 0.0 && a2[i] == 0.0));
 }
