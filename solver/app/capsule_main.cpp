@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "solver/app/cli_support.hpp"
+#include "solver/app/reference_bim_command.hpp"
 #include "solver/lbm/bench.hpp"
 #include "solver/run/bench_member3d.hpp"
 #include "solver/scene/memory_estimate.hpp"
@@ -19,7 +20,8 @@ const char* const exit_codes =
 }  // namespace
 
 int main(int argc, char** argv) {
-  // `capsule SCENE -o OUT` is the common form; subcommands `check` and `bench` sit beside it.
+  // `capsule SCENE -o OUT` is the common form; subcommands `check`, `bench` and
+  // `reference-bim` sit beside it.
   if (argc >= 2 && std::string(argv[1]) == "check") {
     CLI::App app{"capsule check: validate a scene and print it with every default filled in"};
     app.footer(exit_codes);
@@ -42,6 +44,7 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  if (argc >= 2 && std::string(argv[1]) == "reference-bim") return capsule::cli::reference_bim_command(argc - 1, argv + 1);
   if (argc >= 2 && std::string(argv[1]) == "bench") {
     CLI::App app{"capsule bench: performance benchmarks"};
     app.footer("Exit status: 0 done, 1 failure, 2 bad command line.");
@@ -70,7 +73,8 @@ int main(int argc, char** argv) {
                "  capsule SCENE.json -o MEMBER.h5   run one scene\n"
                "  capsule check SCENE.json          validate a scene\n"
                "  capsule bench lbm                 fluid benchmark\n"
-               "  capsule bench member3d            3D step benchmark, by part"};
+               "  capsule bench member3d            3D step benchmark, by part\n"
+               "  capsule reference-bim --ca CA     boundary-integral reference capsule"};
   app.footer(exit_codes);
   capsule::RunOptions opt;
   app.add_option("scene", opt.scene_path, "scene JSON file")->required()->check(CLI::ExistingFile);

@@ -13,6 +13,8 @@ ElasticLaw elastic_law_from_name(const std::string& name) {
 
 std::string elastic_law_name(ElasticLaw law) { return law == ElasticLaw::skalak ? "skalak" : "neo-hookean"; }
 
+double law_modulus(ElasticLaw law, double E_s) { return law == ElasticLaw::neo_hookean ? E_s / 3.0 : E_s; }
+
 double Constitutive::energy_density(const Mat2& Cg) const {
   const double tr = Cg.trace(), det = Cg.determinant();
   if (law == ElasticLaw::neo_hookean) return 0.5 * E_s * (tr + 1.0 / det - 3.0);  // (56)

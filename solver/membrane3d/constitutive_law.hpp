@@ -14,6 +14,12 @@ enum class ElasticLaw { neo_hookean, skalak };
 ElasticLaw elastic_law_from_name(const std::string& name);  // "neo-hookean" | "skalak"
 std::string elastic_law_name(ElasticLaw law);
 
+// The modulus the law's formulas take (Constitutive::E_s) for the E_s of Ca = mu k a / E_s (34)
+// (docs/conventions.md "Neo-Hookean modulus"): neo-Hookean E_s/3, the small-deformation shear
+// modulus G_s of Ramanujan and Pozrikidis' "surface modulus of elasticity" E_s; Skalak E_s as
+// printed.
+double law_modulus(ElasticLaw law, double E_s);
+
 struct Constitutive {
   ElasticLaw law = ElasticLaw::neo_hookean;
   double E_s = 1;  // shear modulus

@@ -72,7 +72,7 @@ static_assert(sizeof(m3::Vec3) == 3 * sizeof(double), "membrane positions are us
 // Ca = 0.05 deforms to D = 0.12 at a = 5 where Ramanujan and Pozrikidis have 0.26 (solver/membrane3d/README.md
 // "Conventions", measured). Skalak: (60)-(61) as printed, G_s = E_s (Skalak et al., Yazdani and
 // Bagchi).
-double shear_modulus_3d(const Scene& s, const Units& u) { return s.law == "neo-hookean" ? u.E_s / 3.0 : u.E_s; }
+double shear_modulus_3d(const Scene& s, const Units& u) { return m3::law_modulus(m3::elastic_law_from_name(s.law), u.E_s); }
 
 struct Timings {
   // Wall seconds: the fluid step; spreading, interpolation and the position update; the

@@ -113,3 +113,25 @@ TEST_CASE("capsule command-line errors exit 2, and --help documents the exit sta
   CHECK(capsule("check --help").output.find("Exit status:") != std::string::npos);
   fs::remove_all(dir);
 }
+
+TEST_CASE("capsule reference-bim writes a summary row and a series; bad options exit 2", "[capsule3d]") {
+  const fs::path dir = scratch();
+  const fs::path series = dir / "series.csv";
+  const Result r = capsule("reference-bim --ca 0.1 --level 1 --kt 0.2 --every 0.1 -o " + quote(series.string()));
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.output.rfind("level,vertices,Ca,law,", 0) == 0);
+  CHECK(r.output.find("\n1,42,0.1,neo-hookean,") != std::string::npos);
+  std::ifstream in(series);
+  std::string header;
+  std::getline(in, header);
+  CHECK(header == "kt,D,theta,L,W,extent_D,volume_change,area_change");
+  CHECK(!fs::exists(series.string() + ".part"));
+  for (const std::string& args : {std::string("reference-bim"), std::string("reference-bim --ca -1"),
+                                  std::string("reference-bim --ca 0.1 --law hooke"),
+                                  std::string("reference-bim --ca 0.1 --level 9")}) {
+    INFO("capsule " << args);
+    CHECK(capsule(args).exit_code == 2);
+  }
+  fs::remove_all(dir);
+}

@@ -1,0 +1,47 @@
+// `capsule reference-bim`: the boundary-integral reference capsule (solver/boundary_integral/).
+#include "solver/app/reference_bim_command.hpp"
+
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "solver/app/cli_support.hpp"
+#include "solver/boundary_integral/reference_run.hpp"
+
+namespace capsule::cli {
+
+int reference_bim_command(int argc, const char* const* argv) {
+  CLI::App app{"capsule reference-bim: a capsule in unbounded simple shear by the boundary-integral method\n"
+               "(V = 1, Stokes flow, no walls; units a = k = mu = 1). Prints a summary row (CSV with header)."};
+  app.footer("Exit status: 0 done, 1 the run failed (unstable or a file could not be written), 2 bad command line.");
+  boundary_integral::ReferenceRunOptions o;
+  auto& c = o.capsule;
+  app.add_option("--ca", c.Ca, "capillary number mu k a / E_s (34)")->required()->check(CLI::Range(1e-5, 10.0));
+  app.add_option("--law", c.law, "membrane law")->capture_default_str()->check(CLI::IsMember({"neo-hookean", "skalak"}));
+  app.add_option("--C", c.C, "Skalak area-dilation constant")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--eb", c.E_b, "bending modulus E_B / (a^2 E_s)")->capture_default_str()->check(CLI::Range(0.0, 10.0));
+  app.add_option("--level", c.level, "icosphere level (2: 162, 3: 642, 4: 2562, 5: 10242 vertices)")
+      ->capture_default_str()->check(CLI::Range(1, 6));
+  app.add_option("--kt", o.kt_end, "shear until this kt")->capture_default_str()->check(CLI::Range(1e-3, 1000.0));
+  app.add_option("--cfl", c.cfl, "time step as a fraction of the explicit limit")->capture_default_str()->check(CLI::Range(1e-3, 2.0));
+  app.add_option("--dt", c.dt, "time step in kt units (overrides --cfl)")->check(CLI::Range(1e-7, 1.0));
+  app.add_option("--every", o.every, "series interval in kt")->capture_default_str()->check(CLI::Range(1e-4, 100.0));
+  app.add_option("--singular-gauss", c.quadrature.singular_gauss_points, "Gauss points per direction on the target's own triangles")
+      ->capture_default_str()->check(CLI::IsMember({4, 6, 8, 12, 16}));
+  app.add_option("--near-gauss", c.quadrature.near_gauss_points, "Gauss points per direction on the other near triangles")
+      ->capture_default_str()->check(CLI::IsMember({4, 6, 8, 12, 16}));
+  app.add_option("--near", c.quadrature.near_factor, "near zone, in longest edges of a triangle")
+      ->capture_default_str()->check(CLI::Range(0.0, 20.0));
+  app.add_option("--near-radius", c.quadrature.near_radius, "near zone, in units of a (the larger of the two applies)")
+      ->capture_default_str()->check(CLI::Range(0.0, 4.0));
+  app.add_option("-o,--series", o.series_path, "CSV file for the shape series (kt, D, theta, ...)");
+  if (const int code = parse_or_exit_code(app, argc, argv); code >= 0) return code;
+  try {
+    boundary_integral::run_reference(o, std::cout);
+    return 0;
+  } catch (const std::exception& e) {
+    std::cerr << "capsule reference-bim: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace capsule::cli

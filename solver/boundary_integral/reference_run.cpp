@@ -1,0 +1,66 @@
+#include "solver/boundary_integral/reference_run.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <ostream>
+#include <stdexcept>
+#include <vector>
+
+namespace capsule::boundary_integral {
+
+std::string reference_summary_header() {
+  return "level,vertices,Ca,law,E_b,dt,steps,kt,D_end,D_peak,kt_peak,theta_end_over_pi,D_change_last_kt,"
+         "extent_D_end,volume_change,area_change,wall_s";
+}
+
+void run_reference(const ReferenceRunOptions& o, std::ostream& summary) {
+  if (!(o.kt_end > 0)) throw std::invalid_argument("reference-bim: --kt must be > 0");
+  if (!(o.every > 0)) throw std::invalid_argument("reference-bim: --every must be > 0");
+  const auto t0 = std::chrono::steady_clock::now();
+  ShearedCapsule capsule(o.capsule);
+  std::vector<CapsuleShape> series{capsule.shape()};
+  const long total = std::lround(std::ceil(o.kt_end / capsule.dt() - 1e-9));
+  const long stride = std::max(1L, std::lround(o.every / capsule.dt()));
+  for (long n = 1; n <= total; ++n) {
+    capsule.step();
+    if (n % stride == 0 || n == total) series.push_back(capsule.shape());
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  if (!o.series_path.empty()) {
+    const std::filesystem::path path(o.series_path), tmp(o.series_path + ".part");
+    {
+      std::ofstream out(tmp);
+      if (!out) throw std::runtime_error("reference-bim: cannot write " + tmp.string());
+      out << "kt,D,theta,L,W,extent_D,volume_change,area_change\n";
+      char line[256];
+      for (const auto& s : series) {
+        std::snprintf(line, sizeof line, "%.6g,%.8g,%.8g,%.8g,%.8g,%.8g,%.4e,%.4e\n", s.kt, s.D, s.theta, s.L, s.W,
+                      s.extent_D, s.volume_change, s.area_change);
+        out << line;
+      }
+      if (!out) throw std::runtime_error("reference-bim: writing " + tmp.string() + " failed");
+    }
+    std::filesystem::rename(tmp, path);
+  }
+
+  const CapsuleShape& end = series.back();
+  CapsuleShape peak = series.front();
+  for (const auto& s : series)
+    if (s.D > peak.D) peak = s;
+  double D_before = series.front().D;  // D one kt before the end (the nearest written point)
+  for (const auto& s : series)
+    if (s.kt <= end.kt - 1.0 + 1e-9) D_before = s.D;
+  char row[512];
+  std::snprintf(row, sizeof row, "%d,%d,%.6g,%s,%.6g,%.6g,%ld,%.6g,%.6f,%.6f,%.4g,%.5f,%.3e,%.6f,%.3e,%.3e,%.1f",
+                o.capsule.level, capsule.mesh().vertex_count(), o.capsule.Ca, o.capsule.law.c_str(), o.capsule.E_b,
+                capsule.dt(), capsule.steps(), end.kt, end.D, peak.D, peak.kt, end.theta / std::numbers::pi,
+                end.D - D_before, end.extent_D, end.volume_change, end.area_change, wall);
+  summary << reference_summary_header() << '\n' << row << '\n';
+}
+
+}  // namespace capsule::boundary_integral
