@@ -21,7 +21,11 @@ int reference_bim_command(int argc, const char* const* argv) {
   app.add_option("--eb", c.E_b, "bending modulus E_B / (a^2 E_s)")->capture_default_str()->check(CLI::Range(0.0, 10.0));
   app.add_option("--level", c.level, "icosphere level (2: 162, 3: 642, 4: 2562, 5: 10242 vertices)")
       ->capture_default_str()->check(CLI::Range(1, 6));
-  app.add_option("--kt", o.kt_end, "shear until this kt")->capture_default_str()->check(CLI::Range(1e-3, 1000.0));
+  app.add_option("--kt", o.kt_end, "shear until this kt (with --steady: at most)")->capture_default_str()->check(CLI::Range(1e-3, 1000.0));
+  app.add_option("--steady", o.steady_tolerance,
+                 "stop once the range of D over the last --steady-window kt is below this (0: run to --kt)")
+      ->capture_default_str()->check(CLI::Range(0.0, 1.0));
+  app.add_option("--steady-window", o.steady_window_kt, "window of --steady, in kt")->capture_default_str()->check(CLI::Range(0.05, 100.0));
   app.add_option("--cfl", c.cfl, "time step as a fraction of the explicit limit")->capture_default_str()->check(CLI::Range(1e-3, 2.0));
   app.add_option("--dt", c.dt, "time step in kt units (overrides --cfl)")->check(CLI::Range(1e-7, 1.0));
   app.add_option("--every", o.every, "series interval in kt")->capture_default_str()->check(CLI::Range(1e-4, 100.0));

@@ -10,7 +10,9 @@ namespace capsule::boundary_integral {
 
 struct ReferenceRunOptions {
   ShearedCapsuleParameters capsule;
-  double kt_end = 6;         // shear until this kt
+  double kt_end = 6;         // shear until this kt (with a steady tolerance: at most this kt)
+  double steady_tolerance = 0;  // > 0: stop once the range of D over the last steady_window_kt is below this
+  double steady_window_kt = 1;
   double every = 0.05;       // series interval in kt
   std::string series_path;   // empty: no series file
 };
