@@ -16,12 +16,13 @@ std::vector<ClaimResult> evaluate_claims(const DissertationResults& res) {
   once(claim_2_mesh), once(claim_2_G);
   once(claim_3_1), once(claim_3_1_overshoot);
   per_case(claim_3_2_proportional), per_case(claim_3_2_modest), per_case(claim_3_2_constant);
+  once(claim_3_2_small_Ca);
   per_case(claim_3_2_response_normalized), once(claim_3_2_cleaner);
   for (const char* c : {"2d", "3d"}) out.push_back(claim_3_3_falls(res, c, "recovery.k_tau_r"));
   out.push_back(claim_3_3_falls(res, "3d", "response.k_tau_s"));
-  once(claim_3_3_slight), per_case(claim_3_3_no_bending);
+  once(claim_3_3_slight), per_case(claim_3_3_no_bending), per_case(claim_3_3_stiff);
   per_case(claim_3_4_linear), per_case(claim_3_4_small_V), per_case(claim_3_4_recovery_more);
-  once(claim_3_5_2d), once(claim_3_5_3d);
+  once(claim_3_5_2d), once(claim_3_5_3d), once(claim_3_5_fig20);
   out.push_back(claim_orders(res, "4.1.1 orders", "two_phase", -1, 1, missed_stop_in(res)));
   once(claim_4_1_1_fit_quality), once(claim_4_1_1_R1), once(claim_4_1_1_R2), once(claim_4_1_1_R1_weak);
   once(claim_4_1_1_R2_eta), once(claim_4_1_1_no_bending), once(claim_4_1_1_phase_angle);

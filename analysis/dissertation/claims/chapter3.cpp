@@ -128,40 +128,6 @@ ClaimResult claim_3_2_proportional(const DissertationResults& res, const std::st
   return r;
 }
 
-// A fitted time divided by Ca V over a case's Ca sweep: tau/tau_e with tau_e = V mu a^2 / E_s
-// (Fig. 16), from k tau and Ca = mu k a / E_s. Ca >= ca_from only.
-Series normalized_by_elastic_time(const DissertationCampaign& c, const std::string& case_name, const std::string& column,
-                                  double ca_from = 0.0) {
-  Series s = series(c, case_name, "Ca", column, [&](const DissertationMember& m) { return parameter(m, "Ca") >= ca_from - 1e-12; });
-  for (auto& p : s.points) p.y /= p.x * parameter(*p.member, "V");
-  return s;
-}
-
-// Sec. 3.2: "the normalized recovery time tau_r/tau_e is nearly constant for Ca >= 0.1".
-ClaimResult claim_3_2_constant(const DissertationResults& res, const std::string& case_name) {
-  auto [r, c] = open_claim(res, "3.2 constant", {{"case", case_name}});
-  if (!c) return r;
-  const Series s = normalized_by_elastic_time(*c, case_name, "recovery.k_tau_r", 0.1);
-  if (!have_points(r, s, 3, "values of Ca >= 0.1 with k tau_r")) return r;
-  const double spread = relative_spread(s.ys());
-  set(r, spread <= 0.2, "spread " + num(spread) + "; tau_r/tau_e: " + s.listing("Ca"));
-  return r;
-}
-
-// k tau_s and k tau_r of a case against x, with at least n values each; nullopt, r.measured saying
-// why, otherwise.
-struct BothTimes {
-  Series response, recovery;
-};
-std::optional<BothTimes> both_times(ClaimResult& r, const DissertationCampaign& c, const std::string& case_name,
-                                    const std::string& x, std::size_t n) {
-  BothTimes t{series(c, case_name, x, "response.k_tau_s"), series(c, case_name, x, "recovery.k_tau_r")};
-  if (!have_points(r, t.response, n, "values of " + x + " with k tau_s") ||
-      !have_points(r, t.recovery, n, "values of " + x + " with k tau_r"))
-    return std::nullopt;
-  return t;
-}
-
 // Sec. 3.2: "response time k tau_s rises linearly but modestly with Ca" (beside k tau_r,
 // "almost directly proportional": modest against that).
 ClaimResult claim_3_2_modest(const DissertationResults& res, const std::string& case_name) {
@@ -180,37 +146,6 @@ ClaimResult claim_3_2_modest(const DissertationResults& res, const std::string& 
       "slope " + num(f.slope) + ", R^2 " + num(f.r_squared) + "; rise over Ca " + num(s.points.front().x) + "-" +
           num(s.points.back().x) + ": k tau_s " + num(100 * rise_s) + " %, k tau_r " + num(100 * rise_r) +
           " %; k tau_s: " + s.listing("Ca"));
-  return r;
-}
-
-// Sec. 3.2: "the normalized response time tau_s/tau_e continues to decrease as Ca rises".
-ClaimResult claim_3_2_response_normalized(const DissertationResults& res, const std::string& case_name) {
-  auto [r, c] = open_claim(res, "3.2 response normalized", {{"case", case_name}});
-  if (!c) return r;
-  const Series s = normalized_by_elastic_time(*c, case_name, "response.k_tau_s");
-  if (!have_points(r, s, 4, "values of Ca with k tau_s")) return r;
-  std::string rises;
-  for (std::size_t i = 1; i < s.points.size(); ++i)
-    if (!(s.points[i].y < s.points[i - 1].y)) rises += (rises.empty() ? "" : ", ") + num(s.points[i - 1].x) + " -> " + num(s.points[i].x);
-  set(r, rises.empty(), (rises.empty() ? "falls at every step" : "does not fall from Ca " + rises) + "; tau_s/tau_e: " +
-                            s.listing("Ca"));
-  return r;
-}
-
-// Sec. 3.2: "the constant ratio tau_r/tau_e is cleaner for the spherical capsule".
-ClaimResult claim_3_2_cleaner(const DissertationResults& res) {
-  auto [r, c] = open_claim(res, "3.2 cleaner");
-  if (!c) return r;
-  double spread[2] = {k_nan, k_nan};
-  std::string text;
-  for (int k = 0; k < 2; ++k) {
-    const std::string case_name = k == 0 ? "2d" : "3d";
-    const Series s = normalized_by_elastic_time(*c, case_name, "recovery.k_tau_r", 0.1);
-    if (!have_points(r, s, 3, case_name + " values of Ca >= 0.1 with k tau_r")) return r;
-    spread[k] = relative_spread(s.ys());
-    text += (k ? "; " : "") + case_name + ": spread " + num(spread[k]) + " (" + s.listing("Ca") + ")";
-  }
-  set(r, spread[1] < spread[0], text);
   return r;
 }
 
@@ -290,6 +225,26 @@ ClaimResult claim_3_3_no_bending(const DissertationResults& res, const std::stri
   set(r, D_inf <= 0.2 * D_stop,
       flat->slug + ": D_stop " + num(D_stop) + ", D_inf " + num(D_inf) + " (" + num(100 * D_inf / D_stop) +
           " % of D_stop) at kt " + num(marker(*data, "t_end")));
+  return r;
+}
+
+// Sec. 3.3: "Interestingly, for larger E_b in both two and three dimensions, k tau_s ~ k tau_r".
+ClaimResult claim_3_3_stiff(const DissertationResults& res, const std::string& case_name) {
+  auto [r, c] = open_claim(res, "3.3 stiff", {{"case", case_name}});
+  const auto t = c ? both_times(r, *c, case_name, "E_b", 3) : std::nullopt;
+  if (!t) return r;
+  const Point &s = t->response.points.back(), &q = t->recovery.points.back();
+  if (s.x != q.x) {
+    r.measured = "cannot tell (members missing): the largest E_b lacks one of the two times (k tau_s to E_b " + num(s.x) +
+                 ", k tau_r to E_b " + num(q.x) + ")";
+    return r;
+  }
+  const double ratio = q.y / s.y;
+  std::string text = "at E_b " + num(s.x) + ": k tau_s " + num(s.y) + ", k tau_r " + num(q.y) + ", ratio " + num(ratio);
+  if (t->response.points.front().x == t->recovery.points.front().x)
+    text += " (at E_b " + num(t->response.points.front().x) + ": ratio " +
+            num(t->recovery.points.front().y / t->response.points.front().y) + ")";
+  set(r, ratio >= 0.75 && ratio <= 1.33, text);
   return r;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // Every claim of the dissertation comparison, one function each, defined in chapter2.cpp ...
-// chapter5.cpp; evaluate_claims (claims.cpp) calls them in the order of the text.
+// chapter5.cpp and the files beside them; evaluate_claims (claims.cpp) calls them in the order of the text.
 #include <string>
 
 #include "analysis/dissertation/claims.hpp"
@@ -17,7 +17,9 @@ ClaimResult claim_3_2_constant(const DissertationResults& res, const std::string
 ClaimResult claim_3_2_modest(const DissertationResults& res, const std::string& case_name);
 ClaimResult claim_3_2_response_normalized(const DissertationResults& res, const std::string& case_name);
 ClaimResult claim_3_2_cleaner(const DissertationResults& res);
+ClaimResult claim_3_2_small_Ca(const DissertationResults& res);
 ClaimResult claim_3_3_no_bending(const DissertationResults& res, const std::string& case_name);
+ClaimResult claim_3_3_stiff(const DissertationResults& res, const std::string& case_name);
 ClaimResult claim_3_4_recovery_more(const DissertationResults& res, const std::string& case_name);
 ClaimResult claim_3_3_falls(const DissertationResults& res, const std::string& case_name, const std::string& column);
 ClaimResult claim_3_3_slight(const DissertationResults& res);
@@ -25,6 +27,7 @@ ClaimResult claim_3_4_linear(const DissertationResults& res, const std::string& 
 ClaimResult claim_3_4_small_V(const DissertationResults& res, const std::string& case_name);
 ClaimResult claim_3_5_2d(const DissertationResults& res);
 ClaimResult claim_3_5_3d(const DissertationResults& res);
+ClaimResult claim_3_5_fig20(const DissertationResults& res);
 ClaimResult claim_orders(const DissertationResults& res, const std::string& key, const std::string& fit, int o1, int o2,
                          const Skip& skip);
 ClaimResult claim_4_1_1_fit_quality(const DissertationResults& res);

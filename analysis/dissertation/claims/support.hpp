@@ -201,6 +201,20 @@ inline ClaimResult judge_both_times(ClaimResult r, const DissertationCampaign& c
   return r;
 }
 
+// k tau_s and k tau_r of a case against x, with at least n values each; nullopt, r.measured saying
+// why, otherwise.
+struct BothTimes {
+  Series response, recovery;
+};
+inline std::optional<BothTimes> both_times(ClaimResult& r, const DissertationCampaign& c, const std::string& case_name,
+                                    const std::string& x, std::size_t n) {
+  BothTimes t{series(c, case_name, x, "response.k_tau_s"), series(c, case_name, x, "recovery.k_tau_r")};
+  if (!have_points(r, t.response, n, "values of " + x + " with k tau_s") ||
+      !have_points(r, t.recovery, n, "values of " + x + " with k tau_r"))
+    return std::nullopt;
+  return t;
+}
+
 // How a member's shear was to end: on an inclination (until "theta"), a phase angle ("beta")
 // or otherwise, with its target value, its cap max_kt and the t_stop it recorded. nullopt
 // when the member file is not there to tell.

@@ -174,3 +174,65 @@ TEST_CASE("Chapter 3 claims: D_max ~ D_stop often, not at large V", "[analysis][
           Verdict::cannot_tell);
   }
 }
+
+TEST_CASE("Chapter 3 claims: tau_r/tau_e too large at very small Ca for the circle", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_small_ca");
+  const auto s = [](double) { return 0.4; };
+  const auto judge = [&] { return find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "3.2", "very small Ca"); };
+  SECTION("a recovery that does not fall below 0.3 at small Ca agrees") {
+    // tau_r/tau_e = 10 + 0.3/Ca: 34 and 22 at Ca 0.0125, 0.025 against a mean 11.75 over Ca >= 0.1.
+    write_fits(tmp.path, "ch3_ca", sweep("2d", "Ca", k_ca, s, [](double c) { return 10 * c + 0.3; }));
+    const auto c = judge();
+    INFO(c.measured);
+    CHECK(c.verdict == Verdict::agrees);
+    CHECK(c.measured.find("against the mean 11.7 over Ca >= 0.1 (bound 14.1") != std::string::npos);
+  }
+  SECTION("tau_r/tau_e constant down to the smallest Ca differs") {
+    write_fits(tmp.path, "ch3_ca", sweep("2d", "Ca", k_ca, s, [](double c) { return 10 * c; }));
+    CHECK(judge().verdict == Verdict::differs);
+  }
+  SECTION("no very small Ca cannot tell") {
+    write_fits(tmp.path, "ch3_ca", sweep("2d", "Ca", {0.05, 0.1, 0.2, 0.4}, s, [](double c) { return 10 * c; }));
+    CHECK(judge().verdict == Verdict::cannot_tell);
+  }
+}
+
+TEST_CASE("Chapter 3 claims: k tau_s ~ k tau_r at the largest E_b", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_stiff");
+  const std::vector<double> eb{0.0, 0.025, 0.05, 0.1};
+  const auto judge = [&] { return find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "3.3", "larger E_b, k tau_s ~ k tau_r (3d)"); };
+  SECTION("the two times meeting at E_b 0.1 agrees") {
+    write_fits(tmp.path, "ch3_eb", sweep("3d", "E_b", eb, [](double e) { return 0.5 - 2 * e; }, [](double e) { return 1.0 - 7 * e; }));
+    const auto c = judge();
+    INFO(c.measured);
+    CHECK(c.verdict == Verdict::agrees);
+    CHECK(c.measured.find("at E_b 0.1: k tau_s 0.3, k tau_r 0.3, ratio 1 (at E_b 0: ratio 2)") != std::string::npos);
+  }
+  SECTION("k tau_r twice k tau_s at E_b 0.1 differs") {
+    write_fits(tmp.path, "ch3_eb", sweep("3d", "E_b", eb, [](double e) { return 0.4 - 2 * e; }, [](double e) { return 1.0 - 6 * e; }));
+    CHECK(judge().verdict == Verdict::differs);
+  }
+  SECTION("two values of E_b cannot tell") {
+    write_fits(tmp.path, "ch3_eb", sweep("3d", "E_b", {0.05, 0.1}, [](double) { return 0.3; }, [](double) { return 0.3; }));
+    CHECK(judge().verdict == Verdict::cannot_tell);
+  }
+}
+
+TEST_CASE("Chapter 3 claims: the sphere's times against eta like those against V, raw and normalized (Fig. 20)", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_fig20");
+  const std::vector<double> eta{0.5, 1.0, 2.0, 5.0, 10.0};
+  const auto judge = [&] { return find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "3.5", "striking qualitative similarity"); };
+  write_fits(tmp.path, "ch3_v", sweep("3d", "V", k_v, [](double v) { return 0.2 + 0.08 * v; }, [](double v) { return 0.45 + 0.14 * v; }));
+  SECTION("both sweeps rising, recovery above and steeper, normalized times falling: agrees") {
+    write_fits(tmp.path, "ch3_eta", sweep("3d", "eta", eta, [](double e) { return 0.3 + 0.017 * e; }, [](double e) { return 0.58 + 0.027 * e; }));
+    const auto c = judge();
+    INFO(c.measured);
+    CHECK(c.verdict == Verdict::agrees);
+    CHECK(c.measured.find("eta: slopes k tau_s 0.017, k tau_r 0.027, k tau_r above k tau_s at every eta") != std::string::npos);
+  }
+  SECTION("k tau_r less steep than k tau_s in eta differs") {
+    write_fits(tmp.path, "ch3_eta", sweep("3d", "eta", eta, [](double e) { return 0.3 + 0.017 * e; }, [](double e) { return 0.58 + 0.01 * e; }));
+    CHECK(judge().verdict == Verdict::differs);
+  }
+  SECTION("no eta sweep cannot tell") { CHECK(judge().verdict == Verdict::cannot_tell); }
+}
