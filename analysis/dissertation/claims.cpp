@@ -29,8 +29,9 @@ std::vector<ClaimResult> evaluate_claims(const DissertationResults& res) {
   once(claim_4_1_2_monotone), once(claim_4_1_2_r2);
   out.push_back(claim_orders(res, "4.1.2 orders", "double_exponential", -1, 0, outside_tumbling_ensemble_in(res)));
   once(claim_4_1_2_Ca), once(claim_4_1_2_E_b_V), once(claim_4_1_2_eta), once(claim_4_1_2_fig38);
+  once(claim_4_1_2_fig38_bending);
   once(claim_4_2_A), once(claim_4_2_A_plateau), once(claim_4_2_c0), once(claim_4_2_B), once(claim_4_2_C);
-  once(claim_4_2_C_steady);
+  once(claim_4_2_C_steady), once(claim_4_2_drift);
   once(claim_5_1_1_fit_quality), once(claim_5_1_1_similar), once(claim_5_1_1_ratio_trends);
   once(claim_5_1_1_ratios);
   out.push_back(claim_5_1_2(res, "ch5_bilinear_ca005", 0.2, "Fig. 55"));

@@ -141,43 +141,6 @@ ClaimResult claim_4_1_2_r2(const DissertationResults& res) {
   return r;
 }
 
-// Sec. 4.1.2: Fig. 38's capsule (Ca 0.4, E_b 0.05, V 5, eta 0, stopped at theta = -pi/3):
-// "the capsule's first recover time, tau_R1 = 0.283".
-ClaimResult claim_4_1_2_fig38(const DissertationResults& res) {
-  auto [r, c] = open_claim(res, "4.1.2 Fig. 38");
-  if (!c) return r;
-  const DissertationMember* base = nullptr;
-  for (const DissertationMember* m : c->in_case(""))
-    if (m->case_name != "theta_pi_6" && std::abs(parameter(*m, "Ca") - 0.4) < 1e-9 &&
-        std::abs(parameter(*m, "E_b") - 0.05) < 1e-9 && std::abs(parameter(*m, "V") - 5) < 1e-9 &&
-        parameter(*m, "eta") == 0.0)
-      base = m;
-  if (!base) {
-    r.measured = "cannot tell (members missing): no member with Ca 0.4, E_b 0.05, V 5, eta 0 in fits.json";
-    return r;
-  }
-  if (const std::string missed = missed_stop(res, *base); !missed.empty()) {
-    r.measured = "cannot tell: " + base->slug + ": " + missed;
-    return r;
-  }
-  const ColumnValue v = column_value(base->fits, "double_exponential.k_tau_R1");
-  if (!v.parameter) {
-    r.measured = "cannot tell: " + base->slug + ": (90) " + v.reason;
-    return r;
-  }
-  std::string text = "(90): k tau_R1 " + plus_minus(v.parameter->value, v.parameter->half_width());
-  if (const ColumnValue r2 = column_value(base->fits, "double_exponential.k_tau_R2"); r2.parameter)
-    text += ", k tau_R2 " + num(r2.parameter->value) + ", R^2 " + num(v.fit->r_squared);
-  const ColumnValue f1 = column_value(base->fits, "double_exponential_free.k_tau_R1");
-  const ColumnValue f2 = column_value(base->fits, "double_exponential_free.k_tau_R2");
-  const ColumnValue w = column_value(base->fits, "double_exponential_free.w_R1");
-  if (f1.parameter && f2.parameter && w.parameter)
-    text += "; free amplitudes: k tau_R1 " + num(f1.parameter->value) + ", k tau_R2 " + num(f2.parameter->value) +
-            ", fast share w_R1 " + num(w.parameter->value);
-  set(r, std::abs(v.parameter->value - 0.283) <= 0.2 * 0.283, text);
-  return r;
-}
-
 // ---------------------------------------------------------------- Sec. 4.2 (3D biconcave, Table 1)
 
 // Distance of a phase angle from the nearest rest position: the capsule's half-turn symmetry

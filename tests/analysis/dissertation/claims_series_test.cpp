@@ -1,0 +1,100 @@
+// The claims judged from member-file series beside D_xy (the keys 4.1.2 Fig. 38 bending and 4.2
+// drift of analysis/dissertation/claims.md): each agrees on synthetic member files
+// that satisfy its rule, differs on files that contradict it, and cannot tell without them.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+
+#include "analysis/dissertation/claims.hpp"
+#include "solver/io/member_file.hpp"
+#include "tests/analysis/dissertation_fixtures.hpp"
+#include "tests/analysis/synthetic_campaign.hpp"
+
+using namespace capsule::analysis;
+using namespace capsule::analysis::testing;
+
+namespace {
+
+const double k_nan = std::numeric_limits<double>::quiet_NaN();
+
+std::vector<ClaimResult> judge(const TempDir& tmp) { return evaluate_claims(DissertationResults(tmp.path.string())); }
+
+// Fig. 38's tumbling member: stopped at theta = -pi/3 at kt 10, its mean bending moment 0.08 at
+// the stop falling linearly by `drop` of it over the first kt, then slowly.
+void write_fig38_member(const std::filesystem::path& file, double drop) {
+  std::filesystem::create_directories(file.parent_path());
+  capsule::io::MemberWriter w(file.string());
+  w.set_scene({{"dim", 2}, {"Ca", 0.4}, {"E_b", 0.05}, {"V", 5.0}, {"eta", 0.0}, {"shape", "biconcave"},
+               {"protocol", {{"shear", {{"until", "theta"}, {"value", -M_PI / 3}, {"max_kt", 50.0}}},
+                             {"recover", {{"until", "time"}, {"kt", 20.0}}}}}});
+  for (int i = 0; i <= 600; ++i) {
+    const double t = 0.05 * i, after = std::max(0.0, t - 10.0);
+    const double m = 0.08 * (1.0 - drop * std::min(after, 1.0)) * std::exp(-std::max(0.0, after - 1.0) / 10.0);
+    w.append({{"kt", t}, {"D_xy", t <= 10.0 ? 0.5 : 0.8}, {"theta", 0.2}, {"shear_on", t <= 10.0 ? 1.0 : 0.0}, {"bending_moment", m}});
+  }
+  w.set_markers({{"t_max", k_nan}, {"D_max", k_nan}, {"t_stop", 10.0}, {"D_stop", 0.5}, {"t_min", k_nan}, {"D_min", k_nan},
+                 {"t_end", 30.0}, {"D_inf", 0.8}});
+  w.finish("complete");
+}
+
+// A ch4_3d_cases member whose volume and surface drift linearly to the given values by kt 65.
+void write_drift_member(const std::filesystem::path& file, double volume, double surface, bool with_drift = true) {
+  std::filesystem::create_directories(file.parent_path());
+  capsule::io::MemberWriter w(file.string());
+  w.set_scene({{"dim", 3}, {"Ca", 0.5}, {"E_b", 0.025}, {"V", 2.0}, {"shape", "biconcave"}});
+  for (int i = 0; i <= 65; ++i) {
+    const double t = i, s = t / 65.0;
+    std::map<std::string, double> row{{"kt", t}, {"D_xy", 0.55}, {"theta", 0.2}, {"shear_on", t <= 15.0 ? 1.0 : 0.0}};
+    if (with_drift) row["volume_drift"] = volume * s, row["surface_drift"] = -surface * s;
+    w.append(row);
+  }
+  w.set_markers({{"t_max", k_nan}, {"D_max", k_nan}, {"t_stop", 15.0}, {"D_stop", 0.55}, {"t_min", k_nan}, {"D_min", k_nan},
+                 {"t_end", 65.0}, {"D_inf", k_nan}});
+  w.finish("complete");
+}
+
+}  // namespace
+
+TEST_CASE("Dissertation claims: Fig. 38's bending moment falls by nearly 50 % in the first kt after the stop", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_fig38_bending");
+  const std::string rel = "members/base/member.h5";
+  const auto write = [&](double drop) {
+    write_fig38_member(tmp.path / "ch4_2d_tumble" / rel, drop);
+    write_fits(tmp.path, "ch4_2d_tumble",
+               nlohmann::json::array({member_json("Ca-Ca0.4", "Ca", {{"Ca", 0.4}, {"E_b", 0.05}, {"V", 5.0}, {"eta", 0.0}}, {}, rel)}));
+    return find_claim(judge(tmp), "4.1.2", "bending moment decreases by nearly 50 %");
+  };
+  SECTION("a fall of 45 % agrees") {
+    const auto c = write(0.45);
+    INFO(c.measured);
+    CHECK(c.verdict == Verdict::agrees);
+    CHECK(c.measured.find("mean |m| 0.08 at the stop (kt 10), 0.044 at kt_stop + 1: falls by 45 %") != std::string::npos);
+  }
+  SECTION("a fall of 10 % differs") { CHECK(write(0.1).verdict == Verdict::differs); }
+  SECTION("no member file cannot tell") {
+    write_fits(tmp.path, "ch4_2d_tumble",
+               nlohmann::json::array({member_json("Ca-Ca0.4", "Ca", {{"Ca", 0.4}, {"E_b", 0.05}, {"V", 5.0}, {"eta", 0.0}}, {}, rel)}));
+    CHECK(find_claim(judge(tmp), "4.1.2", "bending moment decreases by nearly 50 %").verdict == Verdict::cannot_tell);
+  }
+}
+
+TEST_CASE("Dissertation claims: the 3D capsule's volume and surface drift by at most 3 %", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_drift");
+  const auto write = [&](double surface_of_C, bool with_drift = true) {
+    write_drift_member(tmp.path / "ch4_3d_cases/members/A/member.h5", 0.005, 0.02);
+    write_drift_member(tmp.path / "ch4_3d_cases/members/C/member.h5", 0.008, surface_of_C, with_drift);
+    write_fits(tmp.path, "ch4_3d_cases",
+               nlohmann::json::array({member_json("A_c0_-2.09-E_b0.025", "A_c0_-2.09", {{"E_b", 0.025}}, {}, "members/A/member.h5"),
+                                      member_json("C-E_b0.025", "C", {{"E_b", 0.025}}, {}, "members/C/member.h5")}));
+    return find_claim(judge(tmp), "4.2", "nearly conserved");
+  };
+  SECTION("2 % and 2.5 % agree") {
+    const auto c = write(0.025);
+    INFO(c.measured);
+    CHECK(c.verdict == Verdict::agrees);
+    CHECK(c.measured.find("C-E_b0.025: volume 0.8 %, surface 2.5 %") != std::string::npos);
+  }
+  SECTION("a surface 4.5 % smaller differs") { CHECK(write(0.045).verdict == Verdict::differs); }
+  SECTION("a member without the drift series cannot tell") { CHECK(write(0.0, false).verdict == Verdict::cannot_tell); }
+}
