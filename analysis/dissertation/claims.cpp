@@ -33,12 +33,13 @@ std::vector<ClaimResult> evaluate_claims(const DissertationResults& res) {
   once(claim_4_2_A), once(claim_4_2_A_plateau), once(claim_4_2_c0), once(claim_4_2_B), once(claim_4_2_C);
   once(claim_4_2_C_steady), once(claim_4_2_drift);
   once(claim_5_1_1_fit_quality), once(claim_5_1_1_similar), once(claim_5_1_1_ratio_trends);
-  once(claim_5_1_1_ratios);
+  once(claim_5_1_1_ratios), once(claim_5_1_1_r2_rows);
   out.push_back(claim_5_1_2(res, "ch5_bilinear_ca005", 0.2, "Fig. 55"));
   out.push_back(claim_5_1_2(res, "ch5_bilinear_ca005_eb", 1.0, "Fig. 56"));
+  once(claim_5_1_3_ratios_differ);
   out.push_back(claim_5_2_pairs(res, true));
   out.push_back(claim_5_2_pairs(res, false));
-  once(claim_5_2_n), once(claim_5_2_mesh), once(claim_5_2_gamma);
+  once(claim_5_2_n), once(claim_5_2_mesh), once(claim_5_2_gamma), once(claim_5_2_fig66);
   return out;
 }
 

@@ -285,4 +285,88 @@ ClaimResult claim_5_2_gamma(const DissertationResults& res) {
   return r;
 }
 
+// The peak D_xy in each period T of an oscillatory member's shear after the first (the flow
+// sin(pi t/T) reverses every T, and D_xy peaks once per direction); empty, with why, when the
+// member has no period or no full period after the first.
+std::vector<double> period_peaks(const ShearMember& m, std::string& why) {
+  const io::MemberData& d = *m.data;
+  const double T = scene_value(d, "/protocol/shear/oscillatory_period_kt");
+  const auto& kt = d.series.at("kt");
+  const auto& D = d.series.at("D_xy");
+  const double t_stop = std::isfinite(marker(d, "t_stop")) ? marker(d, "t_stop") : kt.back();
+  std::vector<double> peaks;
+  for (int k = 1; T > 0.0 && (k + 1) * T <= t_stop + 1e-9; ++k) {
+    double peak = -std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < kt.size() && i < D.size(); ++i)
+      if (kt[i] >= k * T - 1e-9 && kt[i] < (k + 1) * T - 1e-9) peak = std::max(peak, D[i]);
+    peaks.push_back(peak);
+  }
+  if (peaks.empty()) why = m.member->slug + ": no full period of oscillatory shear after the first (T " + num(T) + ")";
+  return peaks;
+}
+
+// Sec. 5.2.2 (Fig. 66): "the only differences appear when the direction of flow changes, as the
+// power law model with n = 1 is consistently less deformed than its counterparts, which continue
+// to agree astonishingly well." As in 5.2.1, a member whose peaks move with resolution by more
+// than the criterion's 10 % cannot decide it (the power law's shell viscosity, docs/findings).
+ClaimResult claim_5_2_fig66(const DissertationResults& res) {
+  auto [r, found] = open_claim(res, "5.2.2 Fig. 66");
+  if (!found) return r;
+  const DissertationCampaign& c = *found;
+  const char* const cases[] = {"kv", "powerlaw_n1", "powerlaw_n064"};
+  std::vector<ShearMember> members;
+  std::vector<std::vector<double>> peaks;
+  std::string why;
+  for (const char* name : cases) {
+    auto ms = shear_members(res, c, name, why);
+    if (ms.empty()) {
+      part_missing(why, std::string("no case ") + name + " member with a member file");
+      continue;
+    }
+    peaks.push_back(period_peaks(ms.front(), why));
+    members.push_back(std::move(ms.front()));
+  }
+  if (members.size() < 3 || peaks[0].empty() || peaks[1].size() != peaks[0].size() || peaks[2].size() != peaks[0].size()) {
+    r.measured = "cannot tell (members missing): " + (why.empty() ? std::string("the three members span different periods") : why);
+    return r;
+  }
+  const auto& kv = peaks[0];
+  const auto& n1 = peaks[1];
+  const auto& n064 = peaks[2];
+  std::size_t n1_not_least = 0;
+  double widest = 0.0;  // the largest |D_kv - D_n064| / D_kv over the periods
+  std::string listing;
+  for (std::size_t k = 0; k < kv.size(); ++k) {
+    if (!(n1[k] < kv[k] && n1[k] < n064[k])) ++n1_not_least;
+    widest = std::max(widest, std::abs(kv[k] - n064[k]) / kv[k]);
+    listing += (listing.empty() ? "" : "; ") + std::string("period ") + std::to_string(k + 2) + ": kv " + num(kv[k]) + ", n = 1 " +
+               num(n1[k]) + ", n = 0.64 " + num(n064[k]);
+  }
+  const std::string text = "peak D_xy per period: " + listing + "; n = 1 the least in " +
+                           std::to_string(kv.size() - n1_not_least) + " of " + std::to_string(kv.size()) +
+                           " periods; kv and n = 0.64 apart by up to " + num(100 * widest) + " %";
+  const auto mean_peak = [](const ShearMember* m) {
+    std::string w;
+    const auto p = period_peaks(*m, w);
+    double sum = 0.0;
+    for (double x : p) sum += x / static_cast<double>(p.size());
+    return p.empty() ? k_nan : sum;
+  };
+  std::string unconverged;
+  for (std::size_t i = 0; i < members.size(); ++i) {
+    const auto shift = resolution_shift(res, c, members[i], mean_peak);
+    if (shift && std::abs(shift->relative) > 0.1)
+      unconverged += (unconverged.empty() ? "" : "; ") + std::string(cases[i]) + ": " + num(shift->coarse_value) + " at " +
+                     shift->key + " " + num(shift->coarse_level) + ", " + num(mean_peak(&members[i])) + " at " +
+                     num(shift->fine_level) + " (" + num(100 * shift->relative) + " %)";
+  }
+  if (!unconverged.empty()) {
+    r.measured = "cannot tell (not converged in resolution: the mean peak D_xy moves by more than the criterion's 10 % "
+                 "between the two finest levels; " + unconverged + "): " + text;
+    return r;
+  }
+  set(r, n1_not_least == 0 && widest <= 0.1, text);
+  return r;
+}
+
 }  // namespace capsule::analysis::claims

@@ -71,3 +71,36 @@ TEST_CASE("Sec. 5.1.1 claims: bilinear fit quality, similar a_s and b_s, and the
     CHECK(find_claim(claims, "5.1.1", "b_s/a_s ~ 2.8, 3.5, 3.5").verdict == Verdict::cannot_tell);
   }
 }
+
+TEST_CASE("Sec. 5.1.1-5.1.3 claims: each row's R^2 of k tau_s, and b/a different for the two times", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_bilinear_rows");
+  // b_s/a_s = 3 and b_r/a_r = 5 (each +- 14 %: 10 % half-widths on a and b) unless given.
+  const auto write = [&](double r2_base, double ratio_r_large_Ca, bool large_Ca = true) {
+    write_ensemble(tmp, "ch5_bilinear_ca005", 0.05, 0.0, 0.02, 0.06, r2_base, 0.05, 0.25, 0.995);
+    write_ensemble(tmp, "ch5_bilinear_ca005_eb", 0.05, 0.025, 0.02, 0.06, 0.95, 0.03, 0.15, 0.996);
+    if (large_Ca) write_ensemble(tmp, "ch5_bilinear_ca02", 0.2, 0.0, 0.05, 0.15, 0.96, 0.2, 0.2 * ratio_r_large_Ca, 0.993);
+    return judge(tmp);
+  };
+  SECTION("R^2 0.92 / 0.95 / 0.96 and ratios 3 against 5: agrees") {
+    const auto claims = write(0.92, 5.0);
+    const auto& rows = find_claim(claims, "5.1.1", "R^2 ~ 0.91");
+    INFO(rows.measured);
+    CHECK(rows.verdict == Verdict::agrees);
+    CHECK(rows.measured.find("Ca 0.05, E_b 0: R^2 of k tau_s 0.92 against the text's ~ 0.91") != std::string::npos);
+    const auto& d = find_claim(claims, "5.1.3", "differs for tau_s and tau_r");
+    INFO(d.measured);
+    CHECK(d.verdict == Verdict::agrees);
+  }
+  SECTION("R^2 0.8 for the base, and b_r/a_r = 3.2 beside b_s/a_s = 3 at Ca 0.2: differs") {
+    const auto claims = write(0.8, 3.2);
+    CHECK(find_claim(claims, "5.1.1", "R^2 ~ 0.91").verdict == Verdict::differs);
+    const auto& d = find_claim(claims, "5.1.3", "differs for tau_s and tau_r");
+    INFO(d.measured);
+    CHECK(d.verdict == Verdict::differs);
+  }
+  SECTION("the Ca = 0.2 ensemble not run cannot tell") {
+    const auto claims = write(0.92, 5.0, false);
+    CHECK(find_claim(claims, "5.1.1", "R^2 ~ 0.91").verdict == Verdict::cannot_tell);
+    CHECK(find_claim(claims, "5.1.3", "differs for tau_s and tau_r").verdict == Verdict::cannot_tell);
+  }
+}

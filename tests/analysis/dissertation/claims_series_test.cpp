@@ -1,5 +1,5 @@
-// The claims judged from member-file series beside D_xy (the keys 4.1.2 Fig. 38 bending and 4.2
-// drift of analysis/dissertation/claims.md): each agrees on synthetic member files
+// The claims judged from member-file series beside D_xy (the keys 4.1.2 Fig. 38 bending, 4.2 drift
+// and 5.2.2 Fig. 66 of analysis/dissertation/claims.md): each agrees on synthetic member files
 // that satisfy its rule, differs on files that contradict it, and cannot tell without them.
 #include <catch2/catch.hpp>
 
@@ -54,6 +54,20 @@ void write_drift_member(const std::filesystem::path& file, double volume, double
   w.finish("complete");
 }
 
+// A ch5_oscillatory member: five periods T = 4 of oscillatory shear, D_xy = peak |sin(pi t / T)|.
+void write_oscillating_member(const std::filesystem::path& file, double peak) {
+  std::filesystem::create_directories(file.parent_path());
+  capsule::io::MemberWriter w(file.string());
+  w.set_scene({{"dim", 3}, {"Ca", 0.1}, {"E_b", 0.0}, {"V", 1.0}, {"protocol", {{"shear", {{"oscillatory_period_kt", 4.0}}}}}});
+  for (int i = 0; i <= 400; ++i) {
+    const double t = 0.05 * i;
+    w.append({{"kt", t}, {"D_xy", peak * std::abs(std::sin(M_PI * t / 4.0))}, {"theta", 0.3}, {"shear_on", 1.0}});
+  }
+  w.set_markers({{"t_max", k_nan}, {"D_max", k_nan}, {"t_stop", 20.0}, {"D_stop", 0.0}, {"t_min", k_nan}, {"D_min", k_nan},
+                 {"t_end", 20.0}, {"D_inf", k_nan}});
+  w.finish("complete");
+}
+
 }  // namespace
 
 TEST_CASE("Dissertation claims: Fig. 38's bending moment falls by nearly 50 % in the first kt after the stop", "[analysis][dissertation]") {
@@ -97,4 +111,39 @@ TEST_CASE("Dissertation claims: the 3D capsule's volume and surface drift by at 
   }
   SECTION("a surface 4.5 % smaller differs") { CHECK(write(0.045).verdict == Verdict::differs); }
   SECTION("a member without the drift series cannot tell") { CHECK(write(0.0, false).verdict == Verdict::cannot_tell); }
+}
+
+TEST_CASE("Dissertation claims: in oscillatory shear the n = 1 power law is the least deformed, the other two alike (Fig. 66)", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_fig66");
+  const auto dir = tmp.path / "ch5_oscillatory";
+  // a = 7 members with the given peaks; where n064_a5 is given, a coarser a = 5 n = 0.64 member too.
+  const auto write = [&](double kv, double n1, double n064, double n064_a5 = 0.0) {
+    nlohmann::json m = nlohmann::json::array();
+    for (const auto& [name, peak] : {std::pair{"kv", kv}, std::pair{"powerlaw_n1", n1}, std::pair{"powerlaw_n064", n064}}) {
+      const std::string rel = std::string("members/") + name + "/member.h5";
+      write_oscillating_member(dir / rel, peak);
+      m.push_back(member_json(name, name, {{"resolution.a", 7.0}}, {}, rel));
+    }
+    nlohmann::json analysis;
+    if (n064_a5 > 0) {
+      write_oscillating_member(dir / "members/n064a5/member.h5", n064_a5);
+      m.push_back(member_json("n064a5", "powerlaw_n064", {{"resolution.a", 5.0}}, {}, "members/n064a5/member.h5"));
+      analysis = {{"fits", {"response"}}, {"ladder", {{{"key", "resolution.a"}, {"quantities", {"response.k_tau_s"}}}}}};
+    }
+    write_fits(tmp.path, "ch5_oscillatory", m, nlohmann::json::array(), analysis);
+    return find_claim(judge(tmp), "5.2.2", "consistently less deformed");
+  };
+  SECTION("n = 1 least and the other two within 4 % agree") {
+    const auto c = write(0.28, 0.1, 0.27);
+    INFO(c.measured);
+    CHECK(c.verdict == Verdict::agrees);
+    CHECK(c.measured.find("n = 1 the least in 4 of 4 periods") != std::string::npos);
+  }
+  SECTION("the n = 0.64 member 40 % below Kelvin-Voigt differs") { CHECK(write(0.28, 0.1, 0.17).verdict == Verdict::differs); }
+  SECTION("a power law that moves by 20 % with resolution cannot tell") {
+    const auto c = write(0.28, 0.1, 0.27, 0.216);
+    INFO(c.measured);
+    CHECK(c.verdict == Verdict::cannot_tell);
+    CHECK(c.measured.find("powerlaw_n064: 0.216 at resolution.a 5, 0.27 at 7 (20 %)") != std::string::npos);
+  }
 }
