@@ -3,6 +3,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "analysis/dissertation/document_links.hpp"
 #include "deviations_text.hpp"
 
 namespace capsule::analysis {
@@ -18,12 +19,15 @@ std::vector<KnownDeviation> parse_known_deviations(const std::string& markdown) 
     ++line_number;
     if (line.rfind("## ", 0) == 0) {
       if (d && d->affects.empty()) throw std::runtime_error(where() + "the cause before has no Moves: line");
-      out.push_back({line.substr(3), "", ""});
+      if (d && d->claims.empty()) throw std::runtime_error(where() + "the cause before has no Claims: line");
+      out.push_back({line.substr(3), "", "", {}});
       d = &out.back();
     } else if (!d || line.empty()) {
       continue;  // the title and introduction, and blank lines
-    } else if (line.rfind("Moves: ", 0) == 0) {
+    } else if (line.rfind("Moves: ", 0) == 0 && d->affects.empty()) {
       d->affects = line.substr(7);
+    } else if (line.rfind("Claims: ", 0) == 0 && !d->affects.empty() && d->claims.empty()) {
+      d->claims = split_list(line.substr(8));
     } else if (!d->affects.empty()) {
       throw std::runtime_error(where() + "text after the Moves: line of \"" + d->topic + "\"");
     } else {
@@ -31,6 +35,7 @@ std::vector<KnownDeviation> parse_known_deviations(const std::string& markdown) 
     }
   }
   if (d && d->affects.empty()) throw std::runtime_error(where() + "the last cause has no Moves: line");
+  if (d && d->claims.empty()) throw std::runtime_error(where() + "the last cause has no Claims: line");
   return out;
 }
 
@@ -41,9 +46,20 @@ const std::vector<KnownDeviation>& known_deviations() {
 
 std::string known_deviations_markdown() {
   std::string s;
-  for (const auto& d : known_deviations())
-    s += "- **" + d.topic + ".** " + d.text + " *Moves:* " + d.affects + ".\n";
+  const auto& all = known_deviations();
+  for (std::size_t i = 0; i < all.size(); ++i)
+    s += "- <a id=\"" + cause_anchor(i + 1) + "\"></a>**" + cause_label(i + 1) + " " + all[i].topic + ".** " + all[i].text +
+         " *Moves:* " + all[i].affects + ".\n";
   return s;
+}
+
+std::vector<std::size_t> causes_of_claim(const std::string& claim_key) {
+  std::vector<std::size_t> out;
+  const auto& all = known_deviations();
+  for (std::size_t i = 0; i < all.size(); ++i)
+    for (const auto& key : all[i].claims)
+      if (key == claim_key) out.push_back(i + 1);
+  return out;
 }
 
 }  // namespace capsule::analysis
