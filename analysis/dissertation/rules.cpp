@@ -82,4 +82,6 @@ std::string short_number(double x) {
   return s.str();
 }
 
+std::string short_plus_minus(double value, double half_width) { return short_number(value) + " ± " + short_number(half_width); }
+
 }  // namespace capsule::analysis

@@ -35,5 +35,7 @@ double order_of_magnitude(double x);
 
 // Three significant digits, for the "measured" column.
 std::string short_number(double x);
+// "value ± half_width", both at three significant digits.
+std::string short_plus_minus(double value, double half_width);
 
 }  // namespace capsule::analysis

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "analysis/fit/artificial_viscosity.hpp"
+#include "analysis/dissertation/rules.hpp"
 #include "analysis/fit/fit_statistics.hpp"
 
 namespace capsule::analysis {
@@ -145,14 +146,14 @@ Table table2_side_by_side(const std::vector<Table2RowComparison>& rows) {
       const CoefficientComparison& c = row.coefficients[i];
       std::vector<std::string> cells{row_label(ref), where, c.name, plus_minus(c.reference, c.reference_half_width)};
       if (!c.measured) cells.insert(cells.end(), {"cannot tell (fit failed: " + c.reason + ")", "", ""});
-      else cells.insert(cells.end(), {plus_minus(c.value, c.half_width), format_number(c.difference), c.overlap ? "yes" : "NO"});
+      else cells.insert(cells.end(), {short_plus_minus(c.value, c.half_width), short_number(c.difference), c.overlap ? "yes" : "NO"});
       cells.push_back(i == 0 ? text_r2(row) : "");
-      cells.push_back(i == 0 && row.entry.fit.ok ? format_number(row.entry.fit.r_squared) : "");
+      cells.push_back(i == 0 && row.entry.fit.ok ? short_number(row.entry.fit.r_squared) : "");
       cells.push_back(i == 0 && row.entry.fit.ok ? std::to_string(row.entry.fit.n_points) : "");
       // the campaign's own discretisation error of this coefficient (bilinear.ladder), else blank
       std::string resolution_error;
       if (const auto e = row.entry.ladder_error.find(c.name); e != row.entry.ladder_error.end())
-        resolution_error = "± " + format_number(e->second);
+        resolution_error = "± " + short_number(e->second);
       else if (const auto n = row.entry.ladder_note.find(c.name); n != row.entry.ladder_note.end())
         resolution_error = "n/a: " + n->second;
       cells.push_back(resolution_error);
@@ -176,7 +177,7 @@ Table table2_ratios(const std::vector<Table2RowComparison>& rows) {
     std::vector<std::string> cells{response ? "b_s/a_s" : "b_r/a_r", format_number(ref.Ca), format_number(ref.E_b),
                                    "~ " + format_number(response ? row.ensemble->text_ratio_response
                                                                  : row.ensemble->text_ratio_recovery),
-                                   plus_minus(text.value, text.half_width)};
+                                   short_plus_minus(text.value, text.half_width)};
     if (!row.found) {
       cells.insert(cells.end(), {"cannot tell (" + row.why + ")", "", "", ""});
     } else {
@@ -186,7 +187,7 @@ Table table2_ratios(const std::vector<Table2RowComparison>& rows) {
       } else {
         const bool ov = intervals_overlap(mine.value - mine.half_width, mine.value + mine.half_width,
                                           text.value - text.half_width, text.value + text.half_width);
-        cells.insert(cells.end(), {plus_minus(mine.value, mine.half_width), format_number(mine.value - text.value),
+        cells.insert(cells.end(), {short_plus_minus(mine.value, mine.half_width), short_number(mine.value - text.value),
                                    ov ? "yes" : "NO", mine.method});
       }
     }

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "analysis/dissertation/rules.hpp"
+
 namespace capsule::analysis {
 
 namespace {
@@ -46,9 +48,9 @@ Table validation_table(const DissertationResults& results) {
         continue;
       }
       const double d_curve = number(e, "D_curve_last"), d_xy = number(e, "D_xy_last");
-      t.rows.push_back({name, curve, member, std::to_string(e.value("points", 0)), format_number(number(e, "bias_D_xy")),
-                        format_number(number(e, "max_abs_D_xy")), format_number(number(e, "max_abs_D_extent")),
-                        format_number(d_curve), format_number(d_xy), percent(d_xy / d_curve - 1.0),
+      t.rows.push_back({name, curve, member, std::to_string(e.value("points", 0)), short_number(number(e, "bias_D_xy")),
+                        short_number(number(e, "max_abs_D_xy")), short_number(number(e, "max_abs_D_extent")),
+                        short_number(d_curve), short_number(d_xy), percent(d_xy / d_curve - 1.0),
                         e.value("within_digitising_error", ""), e.value("note", "")});
     }
   }

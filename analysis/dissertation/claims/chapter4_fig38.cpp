@@ -41,7 +41,7 @@ ClaimResult claim_4_1_2_fig38(const DissertationResults& res) {
     r.measured = "cannot tell: " + base->slug + ": (90) " + v.reason;
     return r;
   }
-  std::string text = "(90): k tau_R1 " + plus_minus(v.parameter->value, v.parameter->half_width());
+  std::string text = "(90): k tau_R1 " + short_plus_minus(v.parameter->value, v.parameter->half_width());
   if (const ColumnValue r2 = column_value(base->fits, "double_exponential.k_tau_R2"); r2.parameter)
     text += ", k tau_R2 " + num(r2.parameter->value) + ", R^2 " + num(v.fit->r_squared);
   const ColumnValue f1 = column_value(base->fits, "double_exponential_free.k_tau_R1");

@@ -138,7 +138,7 @@ ClaimResult claim_5_1_1_ratios(const DissertationResults& res) {
       continue;
     }
     parts.add(std::abs(mine.value - quoted) <= mine.half_width,
-              name + ": text ~ " + num(quoted) + ", toolkit " + plus_minus(mine.value, mine.half_width));
+              name + ": text ~ " + num(quoted) + ", toolkit " + short_plus_minus(mine.value, mine.half_width));
   }
   return parts.finish(r);
 }
@@ -188,8 +188,8 @@ ClaimResult claim_5_1_3_ratios_differ(const DissertationResults& res) {
     if (!k.count("k_tau_s") || !k.count("k_tau_r")) continue;  // the reason is in parts.why
     const RatioInterval &s = k.at("k_tau_s"), &t = k.at("k_tau_r");
     const double difference = t.value - s.value, half_width = std::hypot(s.half_width, t.half_width);
-    parts.add(std::abs(difference) > half_width, campaign + ": b_s/a_s " + plus_minus(s.value, s.half_width) + ", b_r/a_r " +
-                                                     plus_minus(t.value, t.half_width) + ", difference " + num(difference) +
+    parts.add(std::abs(difference) > half_width, campaign + ": b_s/a_s " + short_plus_minus(s.value, s.half_width) + ", b_r/a_r " +
+                                                     short_plus_minus(t.value, t.half_width) + ", difference " + num(difference) +
                                                      " (95 % half-width " + num(half_width) + ")");
   }
   return parts.finish(r);
