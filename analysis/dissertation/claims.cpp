@@ -59,4 +59,16 @@ std::vector<std::pair<std::string, ClaimVerdict>> claim_verdicts(const std::vect
   return out;
 }
 
+const char* claim_verdict_text(ClaimVerdict v) {
+  switch (v) {
+    case ClaimVerdict::agrees: return "agrees";
+    case ClaimVerdict::differs: return "differs";
+    case ClaimVerdict::in_part: return "in part";
+    case ClaimVerdict::cannot_tell: return "cannot tell";
+  }
+  return "cannot tell";
+}
+
+std::string claim_chapter(const ClaimResult& row) { return row.section.substr(0, row.section.find('.')); }
+
 }  // namespace capsule::analysis

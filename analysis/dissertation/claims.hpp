@@ -30,5 +30,9 @@ std::vector<ClaimResult> evaluate_claims(const DissertationResults& results);
 // or some rows judged and some not).
 enum class ClaimVerdict { agrees, differs, in_part, cannot_tell };
 std::vector<std::pair<std::string, ClaimVerdict>> claim_verdicts(const std::vector<ClaimResult>& rows);
+const char* claim_verdict_text(ClaimVerdict v);  // "agrees", "differs", "in part", "cannot tell"
+
+// The chapter of the text a claim row belongs to: the first number of its section ("3.2" -> "3").
+std::string claim_chapter(const ClaimResult& row);
 
 }  // namespace capsule::analysis

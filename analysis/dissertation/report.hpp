@@ -1,6 +1,9 @@
 #pragma once
 // results/THESIS.md: the dissertation's Table 2, its ratios b/a and the claims of Chapters
-// 2-5 beside what the shipped campaigns measure, and the known causes of disagreement.
+// 2-5 beside what the shipped campaigns measure, and the known causes of disagreement. Its
+// first screen is the bottom line (bottom_line.hpp) and one short table per chapter
+// (chapter_tables.hpp); the figures (figure_index.hpp), Table 2, the claims in detail
+// (claim_details.hpp) and the known causes follow.
 // Regenerated from results/<campaign>/report/fits.json and member files only; a campaign
 // not yet run gives "cannot tell", never an error.
 #include <string>
@@ -21,10 +24,13 @@ struct DissertationSummary {
   int coefficients_overlap = 0, coefficients_disjoint = 0, coefficients_unknown = 0;  // Table 2's 18
   // with the ladder's resolution error added to the toolkit's interval (coefficients that have one)
   int coefficients_overlap_with_resolution = 0, coefficients_disjoint_with_resolution = 0;
+  int linked_figures = 0;  // the toolkit's figures THESIS.md links (figure_index.hpp), all shipped
 };
 
-// The document; `results_label` is how it names the results folder (as given on the command line).
-std::string dissertation_markdown(const DissertationResults& results, const std::string& results_label, DissertationSummary* summary = nullptr);
+// The document; `results_label` is how it names the results folder (as given on the command line),
+// `link_base` the path from the document's folder to the results folder (its figure links).
+std::string dissertation_markdown(const DissertationResults& results, const std::string& results_label,
+                                  DissertationSummary* summary = nullptr, const std::string& link_base = ".");
 
 // Writes `out_file` (parent folders created). Throws std::runtime_error when it cannot.
 DissertationSummary write_dissertation(const std::string& results_dir, const std::string& out_file);

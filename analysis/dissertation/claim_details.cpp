@@ -1,0 +1,31 @@
+#include "analysis/dissertation/claim_details.hpp"
+
+#include "analysis/dissertation/deviations.hpp"
+#include "analysis/dissertation/document_links.hpp"
+#include "analysis/dissertation/figure_index.hpp"
+
+namespace capsule::analysis {
+
+std::string claim_details_markdown(const std::vector<ClaimResult>& rows, const std::string& results_dir,
+                                   const std::string& link_base) {
+  std::string md;
+  const auto verdicts = claim_verdicts(rows);
+  std::size_t at = 0;  // rows of one claim are adjacent, in the order of claim_verdicts
+  for (const auto& [key, verdict] : verdicts) {
+    md += "#### <a id=\"" + claim_anchor(key) + "\"></a>" + key + " (Sec. " + rows[at].section + "): " +
+          claim_verdict_text(verdict) + "\n\n";
+    for (; at < rows.size() && rows[at].key == key; ++at) {
+      const ClaimResult& r = rows[at];
+      md += "- **The text:** " + r.statement + ". **Tested by:** " + r.campaign + ". **Criterion:** " + r.criterion +
+            ".\n  **Verdict:** " + verdict_text(r.verdict) + ". **The toolkit measures:** " + r.measured + ".\n";
+    }
+    for (const TextFigure* f : figures_of_claim(key))
+      md += "- **Fig. " + f->number + "** (" + f->shows + "): " + figure_links(*f, results_dir, link_base) + ".\n";
+    for (const std::size_t n : causes_of_claim(key))
+      md += "- **Known cause** " + anchor_link(cause_label(n) + " " + known_deviations()[n - 1].topic, cause_anchor(n)) + ".\n";
+    md += "\n";
+  }
+  return md;
+}
+
+}  // namespace capsule::analysis
