@@ -5,6 +5,7 @@
 
 #include "solver/app/cli_support.hpp"
 #include "solver/app/reference_bim_command.hpp"
+#include "solver/app/rigid_sphere_command.hpp"
 #include "solver/lbm/bench.hpp"
 #include "solver/run/bench_member3d.hpp"
 #include "solver/scene/memory_estimate.hpp"
@@ -21,7 +22,7 @@ const char* const exit_codes =
 
 int main(int argc, char** argv) {
   // `capsule SCENE -o OUT` is the common form; subcommands `check`, `bench` and
-  // `reference-bim` sit beside it.
+  // `reference-bim` and `rigid-sphere` sit beside it.
   if (argc >= 2 && std::string(argv[1]) == "check") {
     CLI::App app{"capsule check: validate a scene and print it with every default filled in"};
     app.footer(exit_codes);
@@ -45,6 +46,7 @@ int main(int argc, char** argv) {
     }
   }
   if (argc >= 2 && std::string(argv[1]) == "reference-bim") return capsule::cli::reference_bim_command(argc - 1, argv + 1);
+  if (argc >= 2 && std::string(argv[1]) == "rigid-sphere") return capsule::cli::rigid_sphere_command(argc - 1, argv + 1);
   if (argc >= 2 && std::string(argv[1]) == "bench") {
     CLI::App app{"capsule bench: performance benchmarks"};
     app.footer("Exit status: 0 done, 1 failure, 2 bad command line.");
@@ -74,7 +76,8 @@ int main(int argc, char** argv) {
                "  capsule check SCENE.json          validate a scene\n"
                "  capsule bench lbm                 fluid benchmark\n"
                "  capsule bench member3d            3D step benchmark, by part\n"
-               "  capsule reference-bim --ca CA     boundary-integral reference capsule"};
+               "  capsule reference-bim --ca CA     boundary-integral reference capsule\n"
+               "  capsule rigid-sphere --a A        rigid IB shell: torque and stresslet against Stokes"};
   app.footer(exit_codes);
   capsule::RunOptions opt;
   app.add_option("scene", opt.scene_path, "scene JSON file")->required()->check(CLI::ExistingFile);

@@ -347,11 +347,16 @@ class Simulation3D {
   void build_membrane() {
     const Scene& s = scene_;
     const double a = s.a;
+    // Marker inset (scene resolution.marker_inset): the markers, and the reference shape, on the
+    // radius r_m = a - inset, the moduli unchanged; the smeared shell acts as a surface about
+    // half a lattice unit outside its markers (capsule rigid-sphere), so the capsule the flow
+    // sees is then about the radius a. c0 is a curvature of the shape: c0 / r_m.
+    const double r_m = a - s.marker_inset;
     const m3::Mesh unit = m3::unit_icosphere(s.mesh_level);
     const m3::Vec3 centre(0.5 * grid_.nx, 0.5 * grid_.ny, 0.5 * grid_.nz);
     const double incline = 0.25 * std::numbers::pi;  // 45 degrees in the xy-plane (Sec. 2.5)
-    if (s.shape == "sphere") mesh_ = m3::sphere_mesh(unit, a);
-    else if (s.shape == "biconcave") mesh_ = m3::biconcave_mesh(unit, a);
+    if (s.shape == "sphere") mesh_ = m3::sphere_mesh(unit, r_m);
+    else if (s.shape == "biconcave") mesh_ = m3::biconcave_mesh(unit, r_m);
     else throw std::invalid_argument("3D shape must be sphere or biconcave, got '" + s.shape + "'");
     // Table 1, case C: the stress-free reference is the sphere with the start shape's area.
     m3::Mesh reference = mesh_;
@@ -383,7 +388,7 @@ class Simulation3D {
       p.c0.resize(mesh_.vertex_count());
       for (int v = 0; v < mesh_.vertex_count(); ++v) p.c0[v] = 2.0 * k.mean[v];
     } else {
-      p.c0.assign(mesh_.vertex_count(), s.c0 / a);
+      p.c0.assign(mesh_.vertex_count(), s.c0 / r_m);
     }
     K_v_ = s.volume_penalty * units_.E_s / a;
     p.K_v = K_v_;

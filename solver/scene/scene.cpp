@@ -280,7 +280,13 @@ Scene Scene::from_json(const json& j, const std::string& source) {
         q.choice("membrane_update", std::string("euler"), {"euler", "previous_velocity", "adams_bashforth2"});
     if (s.dim == 2 && s.membrane_update != "euler")
       q.fail("membrane_update", "membrane update \"" + s.membrane_update + "\" is 3D only", "\"euler\" in 2D");
-    q.refuse_unknown({"a", "domain", "segments", "mesh_level", "tau", "kernel", "precision", "membrane_update"});
+    // Markers inside the radius (the immersed boundary's hydrodynamic radius is larger than its
+    // markers': capsule rigid-sphere, docs/findings/immersed_boundary_error_budget.md).
+    s.marker_inset = q.number("marker_inset", 0.0, 0.0, 2.0);
+    if (s.dim == 2 && s.marker_inset != 0.0) q.fail("marker_inset", "a marker inset is 3D only", "0 in 2D");
+    if (s.marker_inset > 0.25 * s.a)
+      q.fail("marker_inset", "marker inset " + std::to_string(s.marker_inset) + " is more than a quarter of a", "[0, a/4]");
+    q.refuse_unknown({"a", "domain", "segments", "mesh_level", "tau", "kernel", "precision", "membrane_update", "marker_inset"});
   }
   {
     json proto = r.object("protocol", true);
@@ -358,6 +364,7 @@ json Scene::to_json() const {
   if (dim == 3 || precision != "double") j["resolution"]["precision"] = precision;
   // Written only when not the default (euler), so the ids of members run before the key stay.
   if (membrane_update != "euler") j["resolution"]["membrane_update"] = membrane_update;
+  if (marker_inset != 0.0) j["resolution"]["marker_inset"] = marker_inset;  // likewise (0)
   j["protocol"] = {{"shear", phase_json(shear, true)}, {"recover", phase_json(recover, false)}};
   j["output"] = {{"interval_kt", output_interval_kt}, {"shapes_at_kt", shapes_at_kt},
                  {"snapshots", snapshots}};
@@ -377,8 +384,9 @@ json Scene::to_json() const {
 
 const std::map<std::string, json>& Scene::omitted_defaults(int dim) {
   static const std::map<std::string, json> d2 = {{"resolution.membrane_update", "euler"},
-                                                 {"resolution.precision", "double"}};
-  static const std::map<std::string, json> d3 = {{"resolution.membrane_update", "euler"}};
+                                                 {"resolution.precision", "double"},
+                                                 {"resolution.marker_inset", 0.0}};
+  static const std::map<std::string, json> d3 = {{"resolution.membrane_update", "euler"}, {"resolution.marker_inset", 0.0}};
   return dim == 2 ? d2 : d3;
 }
 

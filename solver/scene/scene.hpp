@@ -78,6 +78,10 @@ struct Scene {
   std::string precision = "double";  // fluid populations: double | single (solver/lbm/precision.hpp)
   // 3D position update (20): euler | previous_velocity | adams_bashforth2 (solver/ib/membrane_update.hpp)
   std::string membrane_update = "euler";
+  // 3D: the markers (and the reference shape) sit this many lattice units inside the radius a,
+  // the moduli unchanged (simulation3d.cpp "Marker inset"); 0: on the radius a. A candidate
+  // remedy for the smeared shell's hydrodynamic radius, larger than its markers'.
+  double marker_inset = 0;
   PhaseSpec shear;
   PhaseSpec recover;
   double output_interval_kt = 0.05;

@@ -136,3 +136,24 @@ TEST_CASE("capsule reference-bim writes a summary row and a series; bad options 
   }
   fs::remove_all(dir);
 }
+
+TEST_CASE("capsule rigid-sphere writes a summary row and a series; bad options exit 2", "[capsule3d]") {
+  const fs::path dir = scratch();
+  const fs::path series = dir / "series.csv";
+  const Result r = capsule("rigid-sphere --a 2 --level 1 --domain 5 5 5 --kt 0.1 --every 0.05 -o " + quote(series.string()));
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.output.rfind("a,marker_radius,level,nx,ny,nz,spin,kernel,precision,kt,torque,", 0) == 0);
+  CHECK(r.output.find("\n2,2,1,10,10,10,0,peskin4,double,") != std::string::npos);
+  std::ifstream in(series);
+  std::string header;
+  std::getline(in, header);
+  CHECK(header == "kt,torque,stresslet,leakage,lag,slip,slip_rms");
+  CHECK(!fs::exists(series.string() + ".part"));
+  for (const std::string& args : {std::string("rigid-sphere --a 1"), std::string("rigid-sphere --gain 0"),
+                                  std::string("rigid-sphere --kernel gauss"), std::string("rigid-sphere --domain 10 10")}) {
+    INFO("capsule " << args);
+    CHECK(capsule(args).exit_code == 2);
+  }
+  fs::remove_all(dir);
+}

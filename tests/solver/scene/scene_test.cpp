@@ -114,6 +114,29 @@ TEST_CASE("resolution.membrane_update: euler by default and left out of the cano
                     Catch::Contains("resolution.membrane_update: membrane update \"adams_bashforth2\" is 3D only"));
 }
 
+TEST_CASE("resolution.marker_inset: 0 by default and left out of the canonical text; 3D only, at most a/4", "[scene]") {
+  json j3 = minimal_2d();
+  j3["dim"] = 3;
+  j3["shape"] = "sphere";
+  const Scene e = Scene::from_json(j3, "t.json");
+  CHECK(e.marker_inset == 0.0);
+  // The default is not written, so the ids of members run before the key existed stay.
+  CHECK_FALSE(e.to_json()["resolution"].contains("marker_inset"));
+  j3["resolution"] = {{"marker_inset", 0.0}};
+  CHECK(Scene::from_json(j3, "t.json").to_json() == e.to_json());
+  j3["resolution"] = {{"a", 10.0}, {"marker_inset", 0.45}};
+  const Scene s = Scene::from_json(j3, "t.json");
+  CHECK(s.to_json()["resolution"]["marker_inset"] == 0.45);
+  CHECK(Scene::from_json(s.to_json(), "t.json").marker_inset == 0.45);
+  j3["resolution"] = {{"a", 4.0}, {"marker_inset", 1.5}};
+  CHECK_THROWS_WITH(Scene::from_json(j3, "t.json"), Catch::Contains("resolution.marker_inset") && Catch::Contains("[0, a/4]"));
+  j3["resolution"] = {{"marker_inset", -0.1}};
+  CHECK_THROWS_WITH(Scene::from_json(j3, "t.json"), Catch::Contains("resolution.marker_inset"));
+  json j2 = minimal_2d();
+  j2["resolution"] = {{"marker_inset", 0.5}};
+  CHECK_THROWS_WITH(Scene::from_json(j2, "t.json"), Catch::Contains("resolution.marker_inset: a marker inset is 3D only"));
+}
+
 TEST_CASE("the canonical scene does not depend on spelling, and round-trips", "[scene]") {
   json a = minimal_2d();
   json b = json::parse(R"({"eta": 0.0, "V": 1.0, "E_b": 5e-2, "Ca": 4e-2, "shape": "circle", "dim": 2,
