@@ -154,6 +154,18 @@ double Fluid<L>::population(int i, std::size_t node) const {
 }
 
 template <class L>
+std::array<double, 4> Fluid<L>::moments(std::size_t node) const {
+  // shifted populations f_i - w_i: the weights sum to one and have no first moment
+  double drho = 0.0, j[3] = {0.0, 0.0, 0.0};
+  for (int i = 0; i < Q; ++i) {
+    const double g = shifted_population(i, node);
+    drho += g;
+    for (int a = 0; a < D; ++a) j[a] += L::c[i][a] * g;
+  }
+  return {1.0 + drho, j[0], j[1], j[2]};
+}
+
+template <class L>
 std::size_t Fluid<L>::slot(int i, std::size_t node) const {
   if (!swapped_) return population_index(i, node);
   // AA swapped state: f_i(x) sits in A[opp(i)][x - c_i], or in A[i][x] when x - c_i is

@@ -126,6 +126,12 @@ class Fluid {
   // built on slot(), in either precision).
   double population(int i, std::size_t node) const;
 
+  // Density and momentum of the current (pre-collision) populations at a node: {rho, j_x, j_y,
+  // j_z} with j = sum f c, i.e. what the next step() turns into u = (j + F/2)/rho (22) before
+  // the force is known. The 2D driver's exact Kelvin-Voigt step splits the node velocity into
+  // this force-free part and the part the step's own force adds (solver/ib/mobility.hpp).
+  std::array<double, 4> moments(std::size_t node) const;
+
   // Save and restore for restart points (solver/run/checkpoint.hpp): everything a later step()
   // depends on, in an order that does not depend on the memory layout, so that a new layout
   // re-implements only these two functions.
