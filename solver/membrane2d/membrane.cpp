@@ -110,10 +110,15 @@ void Membrane::compute_forces(double dt, bool advance_history) {
     history_ = std::min(history_ + 1, 2);
     if (implicit_) Fv_prev_ = Fv_;
   }
+  assemble_forces();
+}
+
+void Membrane::assemble_forces() {
   const auto& kappa = spline_.curvatures();
   for (std::size_t i = 0; i < n_; ++i) m_[i] = moduli_.E_B * (kappa[i] - kappa0_[i]);  // (32)
   // Segment tension vectors T_i = tau_i t_i + q_i n_i, q_i = (m_{i+1} - m_i) / l_i (32).
-  std::vector<double> T(2 * n_);
+  std::vector<double>& T = T_;
+  T.resize(2 * n_);
   for (std::size_t i = 0; i < n_; ++i) {
     const std::size_t j = (i + 1) % n_;
     const double tx = (xy_[2 * j] - xy_[2 * i]) / l_[i], ty = (xy_[2 * j + 1] - xy_[2 * i + 1]) / l_[i];
@@ -128,6 +133,95 @@ void Membrane::compute_forces(double dt, bool advance_history) {
     force_[2 * i] = T[2 * i] - T[2 * k];
     force_[2 * i + 1] = T[2 * i + 1] - T[2 * k + 1];
   }
+}
+
+void Membrane::compute_forces_coupled(const std::vector<double>& U_free, const Eigen::SparseMatrix<double>& M,
+                                      bool advance_history) {
+  if (U_free.size() != 2 * n_ || M.rows() != static_cast<Eigen::Index>(n_) || M.cols() != static_cast<Eigen::Index>(n_))
+    throw std::invalid_argument("Membrane::compute_forces_coupled: U_free or M does not fit the membrane");
+  if (!(moduli_.mu_s > 0.0)) throw std::invalid_argument("Membrane::compute_forces_coupled: needs mu_s > 0");
+  fit_geometry();
+  for (std::size_t i = 0; i < n_; ++i) lambda_[i] = l_[i] / l0_[i];  // (29)
+  // 1. The other forces (Hooke (30) and bending (32)) at the current shape: tau_v = 0.
+  for (std::size_t i = 0; i < n_; ++i) tau_[i] = moduli_.E_s * (lambda_[i] - 1.0);
+  assemble_forces();
+  // 2. The velocity those forces alone would give, V = U_free + M F_other, and its strain rate.
+  V_.assign(U_free.begin(), U_free.end());
+  for (Eigen::Index k = 0; k < M.outerSize(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(M, k); it; ++it) {
+      V_[2 * it.row()] += it.value() * force_[2 * it.col()];
+      V_[2 * it.row() + 1] += it.value() * force_[2 * it.col() + 1];
+    }
+  tangent_.resize(2 * n_);
+  Eigen::VectorXd b(static_cast<Eigen::Index>(n_));
+  for (std::size_t i = 0; i < n_; ++i) {
+    const std::size_t j = (i + 1) % n_;
+    const double tx = (xy_[2 * j] - xy_[2 * i]) / l_[i], ty = (xy_[2 * j + 1] - xy_[2 * i + 1]) / l_[i];
+    tangent_[2 * i] = tx, tangent_[2 * i + 1] = ty;
+    b[static_cast<Eigen::Index>(i)] = tx * (V_[2 * j] - V_[2 * i]) + ty * (V_[2 * j + 1] - V_[2 * i + 1]);
+  }
+  // 3. A = diag(l/mu_s) + D M D^T, upper triangle. D's row i (segment i, nodes i -> i+1) is -t_i at
+  //    node i and +t_i at node i+1, so node c enters segments c - 1 (sign +) and c (sign -):
+  //    A_ik = sum over ordered node pairs (c, d) of s_ic s_kd (t_i . t_k) M_cd.
+  triplets_.clear();
+  for (std::size_t i = 0; i < n_; ++i)
+    triplets_.emplace_back(static_cast<int>(i), static_cast<int>(i), l_[i] / moduli_.mu_s);
+  for (Eigen::Index k = 0; k < M.outerSize(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(M, k); it; ++it) {
+      const std::size_t c = static_cast<std::size_t>(it.row()), d = static_cast<std::size_t>(it.col());
+      const std::size_t seg_c[2] = {c == 0 ? n_ - 1 : c - 1, c}, seg_d[2] = {d == 0 ? n_ - 1 : d - 1, d};
+      for (int p = 0; p < 2; ++p)
+        for (int q = 0; q < 2; ++q) {
+          const std::size_t i = seg_c[p], j = seg_d[q];
+          if (i > j) continue;  // the mirrored ordered pair (d, c) brings it to the upper triangle
+          const double tt = tangent_[2 * i] * tangent_[2 * j] + tangent_[2 * i + 1] * tangent_[2 * j + 1];
+          triplets_.emplace_back(static_cast<int>(i), static_cast<int>(j), (p == q ? tt : -tt) * it.value());
+        }
+    }
+  // A pattern that rarely changes as the nodes move across lattice cells (a change costs a new
+  // ordering and symbolic analysis): the cyclic band of segments up to `band` apart along the
+  // chain, the widest coupling within a quarter of the chain rounded up to the next multiple of
+  // 4 (a function of this step's couplings only, so a resumed run solves with the same pattern
+  // and stays bitwise); couplings across the capsule (a thin or folded shape) add their own.
+  std::size_t need = 0;
+  for (const auto& t : triplets_) {
+    const std::size_t gap = static_cast<std::size_t>(t.col() - t.row()), chain = std::min(gap, n_ - gap);
+    if (chain <= n_ / 4) need = std::max(need, chain);
+  }
+  const std::size_t band = std::min((need / 4 + 1) * 4, n_ / 2);
+  for (std::size_t i = 0; i < n_; ++i)
+    for (std::size_t r = 1; r <= band; ++r) {
+      const std::size_t j = (i + r) % n_;
+      triplets_.emplace_back(static_cast<int>(std::min(i, j)), static_cast<int>(std::max(i, j)), 0.0);
+    }
+  A_.resize(static_cast<Eigen::Index>(n_), static_cast<Eigen::Index>(n_));
+  A_.setFromTriplets(triplets_.begin(), triplets_.end());
+  A_.makeCompressed();
+  // 4. tau_v = A^-1 D V: mu_s t_i . (U_{i+1} - U_i) / l_i of the velocities U = U_free + M F the
+  //    step will give (F including the viscous forces -D^T tau_v themselves).
+  const auto same = [](const std::vector<int>& v, const int* p, std::size_t size) {
+    return v.size() == size && std::equal(v.begin(), v.end(), p);
+  };
+  const std::size_t nnz = static_cast<std::size_t>(A_.nonZeros());
+  if (!same(factor_.outer, A_.outerIndexPtr(), n_ + 1) || !same(factor_.inner, A_.innerIndexPtr(), nnz)) {
+    factor_.ldlt.analyzePattern(A_);
+    factor_.outer.assign(A_.outerIndexPtr(), A_.outerIndexPtr() + n_ + 1);
+    factor_.inner.assign(A_.innerIndexPtr(), A_.innerIndexPtr() + nnz);
+  }
+  factor_.ldlt.factorize(A_);
+  if (factor_.ldlt.info() != Eigen::Success)
+    throw std::runtime_error("Membrane::compute_forces_coupled: the viscous system is not positive definite");
+  const Eigen::VectorXd tv = factor_.ldlt.solve(b);
+  for (std::size_t i = 0; i < n_; ++i) {
+    tau_v_[i] = tv[static_cast<Eigen::Index>(i)];
+    tau_[i] += tau_v_[i];  // (28), (30), (31)
+  }
+  if (advance_history) {
+    lambda_prev2_.swap(lambda_prev1_);
+    lambda_prev1_ = lambda_;
+    history_ = std::min(history_ + 1, 2);
+  }
+  assemble_forces();
 }
 
 std::vector<double> Membrane::outward_normals() const {

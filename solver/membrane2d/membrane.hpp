@@ -18,6 +18,8 @@
 // (27) at the nodes with five-point arc-length derivatives, as the text does, for comparison.
 // Orientation: counter-clockwise nodes, t along increasing node index, outward n = t turned
 // clockwise, so dt/dl = -kappa n and a circle has kappa = +1/a.
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
 #include <cstddef>
 #include <vector>
 
@@ -60,6 +62,20 @@ class Membrane {
   void set_node_velocity(const std::vector<double>& U, double mobility);
   const std::vector<double>& viscous_tension() const { return tau_v_; }  // per segment, last call
 
+  // Exact implicit Kelvin-Voigt (31) for the immersed-boundary coupling
+  // (resolution.kelvin_voigt_step = "exact_mobility"). The node velocities of this step are
+  // U = U_free + M F exactly (solver/ib/mobility.hpp: U_free from the fluid before the step, M
+  // the step's IB mobility, scalar n x n acting on each component), F all node forces. With
+  // F = F_other - D^T tau_v (F_other: Hooke and bending at the current shape) and
+  // tau_v = W D U, W_i = mu_s / l_i, (D U)_i = t_i . (U_{i+1} - U_i):
+  //   (diag(l_i / mu_s) + D M D^T) tau_v = D (U_free + M F_other),
+  // symmetric positive definite, sparse (segments whose nodes' kernels overlap), solved by a
+  // sparse LDL^T. The viscous tension is then mu_s (1/lambda) dlambda/dt of the motion the nodes
+  // really make in the step: no assumed mobility, no lag. Needs mu_s > 0. Does not use or change
+  // the state of set_node_velocity().
+  void compute_forces_coupled(const std::vector<double>& U_free, const Eigen::SparseMatrix<double>& M,
+                              bool advance_history = true);
+
   // State from the last compute_forces():
   const std::vector<double>& stretch() const { return lambda_; }          // per segment (29)
   const std::vector<double>& tension() const { return tau_; }             // per segment (28)
@@ -89,6 +105,7 @@ class Membrane {
 
  private:
   void fit_geometry();
+  void assemble_forces();  // m, q and the node forces from tau_ at the current geometry
 
   std::size_t n_;
   std::vector<double> xy_;
@@ -102,6 +119,22 @@ class Membrane {
   bool implicit_ = false;
   double mobility_ = 0;
   std::vector<double> U_, Fv_prev_, Fv_, tau_v_, off_, diag_, rx_, ry_, work_, z_;
+  std::vector<double> T_;  // segment tension vectors (assemble_forces)
+  // exact coupled Kelvin-Voigt (compute_forces_coupled)
+  std::vector<double> V_, tangent_;
+  std::vector<Eigen::Triplet<double>> triplets_;
+  Eigen::SparseMatrix<double> A_;
+  // The sparse LDL^T of A, its ordering and symbolic analysis kept while A's pattern is unchanged
+  // (the overlaps change only when nodes move across a lattice cell). A copy starts afresh.
+  struct Factor {
+    Factor() = default;
+    Factor(const Factor&) {}
+    Factor& operator=(const Factor&) { reset(); return *this; }
+    void reset() { outer.clear(), inner.clear(); }
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Upper> ldlt;
+    std::vector<int> outer, inner;  // the pattern ldlt was analysed for
+  };
+  Factor factor_;
 };
 
 }  // namespace capsule::membrane2d
