@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "solver/ib/interpolation.hpp"
+#include "solver/ib/mobility.hpp"
 #include "solver/ib/viscosity_contrast.hpp"
 #include "solver/lbm/fluid.hpp"
 #include "solver/membrane2d/measures.hpp"
@@ -49,6 +50,9 @@ struct Simulation2D::Impl {
   long steps = 0;
   membrane2d::PhaseAngle phase;
   double t_membrane = 0, t_fluid = 0;
+  // resolution.kelvin_voigt_step = "exact_mobility": the step's IB mobility and force-free velocity
+  bool exact_kv = false;
+  ib::StepMobility2D mobility;
 
   static membrane2d::Membrane make_membrane(const Scene& s, const Units& u, const std::vector<int>& n) {
     const double cx = 0.5 * n[0], cy = 0.5 * n[1];
@@ -62,7 +66,7 @@ struct Simulation2D::Impl {
 
   Impl(const Scene& s, const Units& u, const std::vector<int>& n)
       : scene(s), units(u), grid{n[0], n[1], 1}, fluid(n[0], n[1], 1, u.nu, lbm::precision_from_name(s.precision)),
-        membrane(make_membrane(s, u, n)) {
+        membrane(make_membrane(s, u, n)), exact_kv(s.kelvin_voigt_step == "exact_mobility") {
     U.assign(2 * membrane.size(), 0.0);
     area0 = membrane2d::polygon_area(membrane.positions());
     if (s.V != 1.0) {
@@ -121,10 +125,18 @@ void Simulation2D::step(double shear_factor) {
   if (!s.broken.empty()) return;  // the health check reports it at the next output
   const std::size_t n = s.membrane.size();
   auto t0 = Clock::now();
-  // Kelvin-Voigt (31) implicitly in the node velocities (Membrane::set_node_velocity): s.U moved
-  // the nodes onto X(n) (zero before the first step: the membrane starts at rest).
-  if (s.units.mu_s > 0.0) s.membrane.set_node_velocity(s.U, kKVMobility);
-  s.membrane.compute_forces(1.0);  // dt = 1
+  if (s.units.mu_s > 0.0 && s.exact_kv) {
+    // Kelvin-Voigt (31) with the velocities this step will really give the nodes, U = U_free + M F
+    // (solver/ib/mobility.hpp, Membrane::compute_forces_coupled).
+    s.mobility.assemble(s.grid, s.membrane.positions().data(), n, kKernel,
+                        [&](std::size_t node) { return s.fluid.moments(node); });
+    s.membrane.compute_forces_coupled(s.mobility.free_velocity(), s.mobility.matrix());
+  } else {
+    // Kelvin-Voigt (31) implicitly in the node velocities (Membrane::set_node_velocity): s.U moved
+    // the nodes onto X(n) (zero before the first step: the membrane starts at rest).
+    if (s.units.mu_s > 0.0) s.membrane.set_node_velocity(s.U, kKVMobility);
+    s.membrane.compute_forces(1.0);  // dt = 1
+  }
   double* p[2] = {s.fluid.force(0), s.fluid.force(1)};
   // the force field is zero except where the last step spread: clear only there
   if (s.spread_from.empty()) s.fluid.clear_force();

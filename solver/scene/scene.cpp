@@ -286,7 +286,16 @@ Scene Scene::from_json(const json& j, const std::string& source) {
     if (s.dim == 2 && s.marker_inset != 0.0) q.fail("marker_inset", "a marker inset is 3D only", "0 in 2D");
     if (s.marker_inset > 0.25 * s.a)
       q.fail("marker_inset", "marker inset " + std::to_string(s.marker_inset) + " is more than a quarter of a", "[0, a/4]");
-    q.refuse_unknown({"a", "domain", "segments", "mesh_level", "tau", "kernel", "precision", "membrane_update", "marker_inset"});
+    // How the 2D membrane's Kelvin-Voigt viscosity (31) is taken implicitly (simulation2d.cpp).
+    s.kelvin_voigt_step = q.choice("kelvin_voigt_step", std::string("approximate_mobility"),
+                                   {"approximate_mobility", "exact_mobility"});
+    if (s.dim == 3 && s.kelvin_voigt_step != "approximate_mobility")
+      q.fail("kelvin_voigt_step",
+             "Kelvin-Voigt step \"" + s.kelvin_voigt_step +
+                 "\" is the 2D membrane's (the 3D membrane's viscosity is the standard linear solid)",
+             "\"approximate_mobility\" in 3D");
+    q.refuse_unknown({"a", "domain", "segments", "mesh_level", "tau", "kernel", "precision", "membrane_update",
+                      "marker_inset", "kelvin_voigt_step"});
   }
   {
     json proto = r.object("protocol", true);
@@ -365,6 +374,8 @@ json Scene::to_json() const {
   // Written only when not the default (euler), so the ids of members run before the key stay.
   if (membrane_update != "euler") j["resolution"]["membrane_update"] = membrane_update;
   if (marker_inset != 0.0) j["resolution"]["marker_inset"] = marker_inset;  // likewise (0)
+  // Written only when not the default, so the ids of members run before the key stay.
+  if (kelvin_voigt_step != "approximate_mobility") j["resolution"]["kelvin_voigt_step"] = kelvin_voigt_step;
   j["protocol"] = {{"shear", phase_json(shear, true)}, {"recover", phase_json(recover, false)}};
   j["output"] = {{"interval_kt", output_interval_kt}, {"shapes_at_kt", shapes_at_kt},
                  {"snapshots", snapshots}};
@@ -385,8 +396,11 @@ json Scene::to_json() const {
 const std::map<std::string, json>& Scene::omitted_defaults(int dim) {
   static const std::map<std::string, json> d2 = {{"resolution.membrane_update", "euler"},
                                                  {"resolution.precision", "double"},
-                                                 {"resolution.marker_inset", 0.0}};
-  static const std::map<std::string, json> d3 = {{"resolution.membrane_update", "euler"}, {"resolution.marker_inset", 0.0}};
+                                                 {"resolution.marker_inset", 0.0},
+                                                 {"resolution.kelvin_voigt_step", "approximate_mobility"}};
+  static const std::map<std::string, json> d3 = {{"resolution.membrane_update", "euler"},
+                                                 {"resolution.marker_inset", 0.0},
+                                                 {"resolution.kelvin_voigt_step", "approximate_mobility"}};
   return dim == 2 ? d2 : d3;
 }
 

@@ -82,6 +82,11 @@ struct Scene {
   // the moduli unchanged (simulation3d.cpp "Marker inset"); 0: on the radius a. A candidate
   // remedy for the smeared shell's hydrodynamic radius, larger than its markers'.
   double marker_inset = 0;
+  // 2D implicit Kelvin-Voigt step (31) (solver/membrane2d/membrane.hpp): "approximate_mobility"
+  // predicts the node velocities with the scalar self-mobility 2 (3/8)^2 and the last step's
+  // velocity (stable up to eta ~ 20 at a = 10); "exact_mobility" solves with the immersed
+  // boundary's real same-step mobility and force-free velocity (solver/ib/mobility.hpp).
+  std::string kelvin_voigt_step = "approximate_mobility";
   PhaseSpec shear;
   PhaseSpec recover;
   double output_interval_kt = 0.05;

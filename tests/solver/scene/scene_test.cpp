@@ -137,6 +137,40 @@ TEST_CASE("resolution.marker_inset: 0 by default and left out of the canonical t
   CHECK_THROWS_WITH(Scene::from_json(j2, "t.json"), Catch::Contains("resolution.marker_inset: a marker inset is 3D only"));
 }
 
+TEST_CASE("resolution.kelvin_voigt_step: approximate_mobility by default and left out of the canonical text; 2D only",
+          "[scene]") {
+  json j = minimal_2d();
+  j["eta"] = 200;
+  const Scene d = Scene::from_json(j, "t.json");
+  CHECK(d.kelvin_voigt_step == "approximate_mobility");
+  // The default is not written, so the ids of members run before the key existed stay.
+  CHECK_FALSE(d.to_json()["resolution"].contains("kelvin_voigt_step"));
+  CHECK(Scene::omitted_defaults(2).at("resolution.kelvin_voigt_step") == "approximate_mobility");
+  CHECK(Scene::omitted_defaults(3).at("resolution.kelvin_voigt_step") == "approximate_mobility");
+  j["resolution"] = {{"kelvin_voigt_step", "approximate_mobility"}};
+  CHECK(Scene::from_json(j, "t.json").to_json() == d.to_json());
+  j["resolution"] = {{"kelvin_voigt_step", "exact_mobility"}};
+  const Scene e = Scene::from_json(j, "t.json");
+  CHECK(e.kelvin_voigt_step == "exact_mobility");
+  CHECK(e.to_json()["resolution"]["kelvin_voigt_step"] == "exact_mobility");
+  CHECK(Scene::from_json(e.to_json(), "t.json").kelvin_voigt_step == "exact_mobility");  // runs as it says
+  CHECK(e.to_json() != d.to_json());  // another member id
+  j["resolution"] = {{"kelvin_voigt_step", "exact"}};
+  CHECK_THROWS_WITH(Scene::from_json(j, "t.json"),
+                    Catch::Contains("resolution.kelvin_voigt_step: unknown value \"exact\"") &&
+                        Catch::Contains("approximate_mobility | exact_mobility"));
+  j["resolution"] = {{"kelvin_voigt_step", 1}};
+  CHECK_THROWS_WITH(Scene::from_json(j, "t.json"), Catch::Contains("resolution.kelvin_voigt_step: expected a string"));
+  json j3 = minimal_2d();
+  j3["dim"] = 3;
+  j3["shape"] = "sphere";
+  j3["resolution"] = {{"kelvin_voigt_step", "approximate_mobility"}};
+  CHECK_FALSE(Scene::from_json(j3, "t.json").to_json()["resolution"].contains("kelvin_voigt_step"));
+  j3["resolution"] = {{"kelvin_voigt_step", "exact_mobility"}};
+  CHECK_THROWS_WITH(Scene::from_json(j3, "t.json"),
+                    Catch::Contains("resolution.kelvin_voigt_step: Kelvin-Voigt step \"exact_mobility\" is the 2D membrane's"));
+}
+
 TEST_CASE("the canonical scene does not depend on spelling, and round-trips", "[scene]") {
   json a = minimal_2d();
   json b = json::parse(R"({"eta": 0.0, "V": 1.0, "E_b": 5e-2, "Ca": 4e-2, "shape": "circle", "dim": 2,
