@@ -160,9 +160,9 @@ class Simulation3D {
     forces_.compute(mesh_, force_);
     auto t0 = Clock::now();
     double* p[3] = {fluid_.force(0), fluid_.force(1), fluid_.force(2)};
-    // The force field is zero except where the last step spread: clear only there.
-    spreading_.clear_last(grid_, p);
-    spreading_.spread(grid_, positions(), reinterpret_cast<const double*>(force_.data()), n, p, kernel_);  // (21)
+    // The force field is zero except where the last step spread: clear only there, then spread
+    // (21), both on all threads, bitwise the serial spreading (spreading_box.hpp).
+    spreading_.clear_last_and_spread(grid_, positions(), reinterpret_cast<const double*>(force_.data()), n, p, kernel_);
     timings_.spreading += std::chrono::duration<double>(Clock::now() - t0).count();
     const double wall = 0.5 * units_.shear_rate * grid_.ny * shear_factor;                  // k H / 2 (1)
     fluid_.set_wall_velocity(-wall, wall);

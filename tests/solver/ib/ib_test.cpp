@@ -1,5 +1,7 @@
 // Immersed-boundary operators (17)-(21) and the viscosity-contrast field (15)-(16).
 #include <catch2/catch.hpp>
+#include <omp.h>
+
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -9,6 +11,7 @@
 
 #include "solver/ib/delta.hpp"
 #include "solver/ib/interpolation.hpp"
+#include "solver/ib/layer_spreading.hpp"
 #include "solver/ib/membrane_update.hpp"
 #include "solver/ib/spreading_box.hpp"
 #include "solver/ib/viscosity_contrast.hpp"
@@ -418,6 +421,97 @@ TEST_CASE("the spreading box clears the whole field when the stencils span the p
   box.spread(g, X.data(), F.data(), 2, p, Kernel::peskin4);  // a box 12 layers tall
   box.clear_last(g, p);
   for (std::size_t i = 0; i < g.size(); ++i) REQUIRE((a0[i] == 0.0 && a1[i] == 0.0 && a2[i] == 0.0));
+}
+
+TEST_CASE("spreading by z-layer arcs is bitwise spread<3> for any partition and thread count", "[ib]") {
+  // Random node sets (a cloud across the periodic seams in x and z, near a wall in y, and one
+  // spread over the whole lattice), random forces, every kernel: the arcs of any partition of
+  // the z axis, spread one after another, and the spreading box on 1, 2 and 3 threads (the
+  // threaded path, above 2048 nodes), give the same bits as the serial spread<3>.
+  const Grid g{24, 18, 20};
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0), force(-1.0, 1.0);
+  const std::size_t n = 3000;
+  for (int cloud = 0; cloud < 2; ++cloud) {
+    std::vector<double> X(3 * n), F(3 * n);
+    for (std::size_t c = 0; c < n; ++c) {
+      if (cloud == 0) {  // a ball of radius 4 about a corner of the periodic box, 2 from the wall y = 0
+        X[3 * c] = 4.0 * (2.0 * unit(rng) - 1.0), X[3 * c + 1] = 2.0 + 4.0 * unit(rng), X[3 * c + 2] = 20.0 + 4.0 * (2.0 * unit(rng) - 1.0);
+      } else {  // anywhere: the stencils span z, so the box is the whole lattice
+        X[3 * c] = g.nx * unit(rng), X[3 * c + 1] = g.ny * unit(rng), X[3 * c + 2] = g.nz * unit(rng);
+      }
+      for (int d = 0; d < 3; ++d) F[3 * c + d] = force(rng);
+    }
+    for (Kernel k : {Kernel::peskin4, Kernel::cosine, Kernel::roma3, Kernel::linear2}) {
+      INFO("cloud " << cloud << ", kernel " << static_cast<int>(k));
+      std::vector<double> s0(g.size()), s1(g.size()), s2(g.size());
+      double* serial[3] = {s0.data(), s1.data(), s2.data()};
+      spread<3>(g, X.data(), F.data(), n, serial, k);
+      // Partitions of the periodic z axis into arcs, uneven and across the seam.
+      for (const std::vector<int>& cuts : {std::vector<int>{0, 20}, std::vector<int>{-3, 5, 6, 17}, std::vector<int>{13, 14, 30, 33}}) {
+        std::vector<double> a0(g.size()), a1(g.size()), a2(g.size());
+        double* p[3] = {a0.data(), a1.data(), a2.data()};
+        for (std::size_t i = 0; i + 1 < cuts.size(); ++i)
+          spread_in_layers(g, X.data(), F.data(), n, p, k, LayerArc{cuts[i], cuts[i + 1] - cuts[i]});
+        if (cuts.back() - cuts.front() < g.nz)  // the rest of the axis
+          spread_in_layers(g, X.data(), F.data(), n, p, k, LayerArc{cuts.back(), g.nz - (cuts.back() - cuts.front())});
+        REQUIRE(a0 == s0);
+        REQUIRE(a1 == s1);
+        REQUIRE(a2 == s2);
+      }
+      for (int threads : {1, 2, 3}) {
+        INFO(threads << " threads");
+        omp_set_num_threads(threads);
+        std::vector<double> a0(g.size(), 7.0), a1(g.size(), 7.0), a2(g.size(), 7.0);
+        double* p[3] = {a0.data(), a1.data(), a2.data()};
+        SpreadingBox box;
+        box.clear_last_and_spread(g, X.data(), F.data(), n, p, k);  // clears everything first
+        REQUIRE(a0 == s0);
+        REQUIRE(a1 == s1);
+        REQUIRE(a2 == s2);
+        box.clear_last_and_spread(g, X.data(), F.data(), n, p, k);  // clears its own box
+        REQUIRE(a0 == s0);
+        REQUIRE(a1 == s1);
+        REQUIRE(a2 == s2);
+        box.clear_last(g, p);
+        for (std::size_t i = 0; i < g.size(); ++i) REQUIRE((a0[i] == 0.0 && a1[i] == 0.0 && a2[i] == 0.0));
+        box.spread(g, X.data(), F.data(), n, p, k);
+        REQUIRE(a0 == s0);
+        REQUIRE(a1 == s1);
+        REQUIRE(a2 == s2);
+      }
+      omp_set_num_threads(1);
+    }
+  }
+}
+
+TEST_CASE("the threaded spreading box clears the last box wherever the membrane moved to", "[ib]") {
+  // The arcs follow the new box; the old box must still be cleared in full, also where it lies
+  // outside the new one (the last thread's arc holds the layers outside the box).
+  const Grid g{16, 16, 30};
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const std::size_t n = 2500;
+  auto cloud = [&](double z) {
+    std::vector<double> X(3 * n);
+    for (std::size_t c = 0; c < n; ++c) X[3 * c] = 8 + 3 * unit(rng), X[3 * c + 1] = 8 + 3 * unit(rng), X[3 * c + 2] = z + 3 * unit(rng);
+    return X;
+  };
+  const std::vector<double> F(3 * n, 0.5), here = cloud(2.0), there = cloud(17.0);
+  for (int threads : {1, 2, 3}) {
+    omp_set_num_threads(threads);
+    std::vector<double> a0(g.size()), a1(g.size()), a2(g.size()), s0(g.size()), s1(g.size()), s2(g.size());
+    double* p[3] = {a0.data(), a1.data(), a2.data()};
+    double* serial[3] = {s0.data(), s1.data(), s2.data()};
+    SpreadingBox box;
+    box.clear_last_and_spread(g, here.data(), F.data(), n, p, Kernel::peskin4);
+    box.clear_last_and_spread(g, there.data(), F.data(), n, p, Kernel::peskin4);
+    spread<3>(g, there.data(), F.data(), n, serial, Kernel::peskin4);
+    REQUIRE(a0 == s0);
+    REQUIRE(a1 == s1);
+    REQUIRE(a2 == s2);
+  }
+  omp_set_num_threads(1);
 }
 
 TEST_CASE("membrane position update: forward Euler first order, Adams-Bashforth second order", "[ib]") {
