@@ -18,6 +18,7 @@ struct Curvatures {
   std::vector<double> mean;      // kappa (79), corrected
   std::vector<double> gaussian;  // kappa_g (78)
   std::vector<Vec3> normal;      // improved outward unit normal (80)
+  std::vector<Vec3> triangle_normal;  // outward unit normal of each triangle (the fit's start, averaged)
 };
 
 // One fit per vertex over its one-ring (5 neighbours: exact solve; 6 or more: least

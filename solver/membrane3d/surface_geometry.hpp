@@ -15,6 +15,8 @@ double enclosed_volume(const Mesh& mesh);
 // Unweighted average of the outward unit normals of the incident triangles (Sec. 2.5.4).
 std::vector<Vec3> averaged_vertex_normals(const Mesh& mesh);
 void averaged_vertex_normals(const Mesh& mesh, std::vector<Vec3>& out);  // reusing out's storage
+// The same, keeping each triangle's outward unit normal in triangle_normal (storage reused).
+void averaged_vertex_normals(const Mesh& mesh, std::vector<Vec3>& out, std::vector<Vec3>& triangle_normal);
 
 // Voronoi area (83) of every vertex, a_vor = (1/8) sum (cot alpha_j + cot beta_j) |x_p - x_j|^2.
 // For an obtuse triangle the circumcentre leaves the triangle and (83) over-counts; there the
@@ -46,6 +48,10 @@ class LaplaceBeltrami {
   std::vector<int> neighbour_;
   std::vector<std::size_t> offset_;
   std::vector<double> area_;
+  // Per triangle t and corner c, at 3 t + c: the cotangent of the angle and the share of the
+  // corner's Voronoi area; per weight, where the cotangents at r[j-1] and r[j+1] sit in cot_.
+  std::vector<double> cot_, share_;
+  std::vector<int> angle_before_, angle_after_;
 };
 
 }  // namespace capsule::membrane3d
