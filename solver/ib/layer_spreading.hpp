@@ -35,7 +35,7 @@ inline void spread_in_layers(const Grid& grid, const double* X, const double* P,
     const int z_first = stencil_first(Xc[2], kernel);
     bool held[4] = {false, false, false, false};
     bool any = false;
-    for (int l = 0; l < width; ++l) any |= held[l] = arc.holds(z_first + l, grid.nz);
+    for (int l = 0; l < width; ++l) any |= held[l] = arc.holds(wrap(z_first + l, grid.nz), grid.nz);
     if (!any) continue;
     const DeltaStencil1D sx = delta_stencil(Xc[0], kernel);
     const DeltaStencil1D sy = delta_stencil(Xc[1], kernel);
