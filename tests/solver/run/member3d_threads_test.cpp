@@ -1,5 +1,5 @@
 // A 3D member is bitwise the same on 1 and 2 threads, and bitwise the same as before the
-// membrane side of a step was parallelised (solver/ib/slab_spreading.hpp, the gathered
+// membrane side of a step was parallelised (solver/ib/layer_spreading.hpp, the gathered
 // Voronoi areas and triangle normals): no physics version changes with the thread count or
 // with these speed-ups.
 //
