@@ -204,7 +204,7 @@ TEST_CASE("exact Kelvin-Voigt step: eta = 200 runs where the approximate step bl
     CHECK(n140.D[k] < 0.9 * eta0.D[k]);
     // Segment convergence: halving the segments (0.22 -> 0.45 lattice units apart at a = 5) moves
     // D_xy by at most 0.09 % (measured: 0.0851 / 0.0850, 0.11881 / 0.11882, 0.13962 / 0.13960).
-    // 0.5 %, the issue's bar for an unchanged member, is 5x that: it leaves room for rounding on
+    // 0.5 %, the bar set for an unchanged member, is 5x that: it leaves room for rounding on
     // other platforms, and a viscous step that depended on the node spacing (the approximate one
     // assumes a self-mobility per node, which does) would miss it.
     CHECK(std::abs(n70.D[k] / n140.D[k] - 1.0) < 0.005);
