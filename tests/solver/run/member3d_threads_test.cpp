@@ -5,13 +5,15 @@
 //
 // Each member runs a few hundred lattice steps at a = 5 (50 x 50 x 40 nodes); the hash is
 // FNV-1a over every series (name and bytes, in name order), the phase angles and the shapes.
-// The recorded hashes were printed by the solver of commit e3d8b69 (before the speed-ups),
-// on one thread and on two.
+// The recorded hashes were printed by the solver of commit e3d8b69 (before the speed-ups), on
+// one thread and on two, on a machine whose libm fingerprint is recorded beside them; where the
+// C library rounds otherwise, only 1 against 2 threads is checked.
 // Level 4 (2562 vertices) so that every threaded membrane loop runs threaded (the normals,
 // Laplace-Beltrami weights and interpolation from 2048 vertices on).
 #include <catch2/catch.hpp>
 #include <omp.h>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 
@@ -71,6 +73,20 @@ const char* power_law_scene = R"({"dim": 3, "shape": "sphere", "Ca": 0.05, "E_b"
   "protocol": {"shear": {"until": "time", "kt": 0.1}, "recover": {"until": "time", "kt": 0}},
   "output": {"interval_kt": 0.02, "shapes_at_kt": [0.1]}})";
 
+// The bits of the C library's transcendental functions the members use (the shapes, the phase
+// angles, the power law). The recorded hashes hold only where these are the recording machine's:
+// glibc picks its implementations by CPU at run time, and another libm may round differently.
+std::string libm_fingerprint() {
+  io::Fnv1a64 h;
+  for (int i = 1; i <= 64; ++i) {
+    const double x = 0.37 * i - 11.3, y = 0.011 * i + 0.05;
+    const double v[] = {std::sin(x), std::cos(x), std::atan2(x, 1.7), std::pow(y, 0.64), std::exp(0.1 * x),
+                        std::log(y), std::acos(std::tanh(0.2 * x)), std::cbrt(y)};
+    h.add(v, sizeof(v));
+  }
+  return h.hex();
+}
+
 }  // namespace
 
 TEST_CASE("a 3D member is bitwise the same on 1 and 2 threads and as before the parallel membrane side",
@@ -80,11 +96,16 @@ TEST_CASE("a 3D member is bitwise the same on 1 and 2 threads and as before the 
     const char* scene;
     const char* hash;  // recorded at commit e3d8b69
   };
+  const std::string libm = libm_fingerprint(), recorded_libm = "d2ab16d2f19472db";
+  const bool recording_libm = libm == recorded_libm;
+  if (!recording_libm)
+    WARN("this C library's transcendental functions round otherwise than the recording machine's (fingerprint "
+         << libm << ", recorded " << recorded_libm << "): 1 against 2 threads is checked, the recorded hashes are not");
   for (const Case& c : {Case{"sphere", sphere_scene, "735b580082927eab"}, Case{"biconcave", biconcave_scene, "7a29f6bf41284f56"},
                         Case{"power_law", power_law_scene, "be42a44160c879f9"}}) {
-    for (int threads : {1, 2}) {
-      INFO(c.name << " on " << threads << " threads");
-      CHECK(member_hash(c.scene, c.name, threads) == c.hash);
-    }
+    const std::string one = member_hash(c.scene, c.name, 1), two = member_hash(c.scene, c.name, 2);
+    INFO(c.name);
+    CHECK(one == two);
+    if (recording_libm) CHECK(one == c.hash);
   }
 }
