@@ -1,6 +1,9 @@
 #include "solver/membrane3d/elasticity.hpp"
 
+#include "solver/membrane3d/surface_shear_rate.hpp"
+
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -27,24 +30,37 @@ ElasticMembrane::ElasticMembrane(const Mesh& ref, const Constitutive& law, const
     if (!(maxwell_.tau_m > 0) || !(maxwell_.dt > 0)) throw std::invalid_argument("SLS needs tau_m > 0 and dt > 0");
     Q_.assign(nt, Mat2::Zero());
     Sm_previous_.assign(nt, Mat2::Zero());
+    const PowerLawRelaxation& pl = maxwell_.power_law;
+    if (pl.on) {
+      if (!(pl.shear_rate > 0) || !(pl.n > 0) || !(pl.gamma_floor > 0))
+        throw std::invalid_argument("power-law SLS needs k > 0, n > 0 and gamma_floor > 0");
+      C_previous_.assign(nt, Mat2::Identity());
+    }
   }
 }
 
 std::vector<double> ElasticMembrane::memory() const {
+  const bool power_law = maxwell_.power_law.on;
   std::vector<double> flat;
-  flat.reserve(8 * Q_.size());
+  flat.reserve((power_law ? 12 : 8) * Q_.size());
   for (std::size_t t = 0; t < Q_.size(); ++t) {
     for (int k = 0; k < 4; ++k) flat.push_back(Q_[t](k % 2, k / 2));
     for (int k = 0; k < 4; ++k) flat.push_back(Sm_previous_[t](k % 2, k / 2));
+    if (power_law)
+      for (int k = 0; k < 4; ++k) flat.push_back(C_previous_[t](k % 2, k / 2));
   }
   return flat;
 }
 
 void ElasticMembrane::restore_memory(const std::vector<double>& flat, bool started) {
-  if (flat.size() != 8 * Q_.size()) throw std::invalid_argument("ElasticMembrane::restore_memory: the saved SLS memory does not fit");
+  const bool power_law = maxwell_.power_law.on;
+  const std::size_t per = power_law ? 12 : 8;
+  if (flat.size() != per * Q_.size()) throw std::invalid_argument("ElasticMembrane::restore_memory: the saved SLS memory does not fit");
   for (std::size_t t = 0; t < Q_.size(); ++t) {
-    for (int k = 0; k < 4; ++k) Q_[t](k % 2, k / 2) = flat[8 * t + k];
-    for (int k = 0; k < 4; ++k) Sm_previous_[t](k % 2, k / 2) = flat[8 * t + 4 + k];
+    for (int k = 0; k < 4; ++k) Q_[t](k % 2, k / 2) = flat[per * t + k];
+    for (int k = 0; k < 4; ++k) Sm_previous_[t](k % 2, k / 2) = flat[per * t + 4 + k];
+    if (power_law)
+      for (int k = 0; k < 4; ++k) C_previous_[t](k % 2, k / 2) = flat[per * t + 8 + k];
   }
   memory_started_ = started;
 }
@@ -108,6 +124,10 @@ void ElasticMembrane::add_forces(const Mesh& cur, std::vector<Vec3>& force) {
     add_elastic_forces(cur, force);
     return;
   }
+  if (maxwell_.power_law.on) {
+    add_power_law_forces(cur, force);
+    return;
+  }
   Constitutive maxwell_law = law_;
   maxwell_law.E_s = maxwell_.E_m;
   const double decay = std::exp(-maxwell_.dt / maxwell_.tau_m);
@@ -118,6 +138,34 @@ void ElasticMembrane::add_forces(const Mesh& cur, std::vector<Vec3>& force) {
     // (67); on the first call the memory starts from the current state (no jump: Q = 0).
     if (started) Q_[t] = decay * Q_[t] + gain * (Sm - Sm_previous_[t]);
     Sm_previous_[t] = Sm;
+    return Mat2(law_.second_piola_kirchhoff(C) + Q_[t]);
+  });
+  memory_started_ = true;
+}
+
+// The SLS step (67) with each triangle's relaxation time from its surface viscosity (102) at
+// its surface shear rate (101) over this step (elasticity.hpp, PowerLawRelaxation).
+void ElasticMembrane::add_power_law_forces(const Mesh& cur, std::vector<Vec3>& force) {
+  Constitutive maxwell_law = law_;
+  maxwell_law.E_s = maxwell_.E_m;
+  const PowerLawRelaxation& pl = maxwell_.power_law;
+  const double dt = maxwell_.dt;
+  const bool started = memory_started_;
+  gamma_.resize(cur.triangle_count());
+  accumulate(cur, force, [&](int t, const Mat2& C) {
+    const Mat2 Sm = maxwell_law.second_piola_kirchhoff(C);
+    if (started) {
+      const double gamma = surface_shear_rate(C_previous_[t], C, dt) / pl.shear_rate;  // (101), units of k
+      gamma_[t] = gamma;
+      const double tau = maxwell_.tau_m * std::pow(std::max(gamma, pl.gamma_floor), pl.n - 1.0);  // (102)
+      const double decay = std::exp(-dt / tau);
+      const double gain = tau / dt * (1.0 - decay);
+      Q_[t] = decay * Q_[t] + gain * (Sm - Sm_previous_[t]);  // (67)
+    } else {
+      gamma_[t] = 0.0;  // the memory starts from the current state, as in add_forces
+    }
+    Sm_previous_[t] = Sm;
+    C_previous_[t] = C;
     return Mat2(law_.second_piola_kirchhoff(C) + Q_[t]);
   });
   memory_started_ = true;

@@ -29,10 +29,25 @@ namespace capsule::membrane3d {
 // In 2nd Piola-Kirchhoff form this is (63)-(64) (the g_0 F F^T and pressure terms are the
 // neo-Hookean S = E_s (I - C^-1/det C) pushed forward). For a fast Maxwell element
 // (tau_m << 1/k) the membrane is Kelvin-Voigt with surface shear viscosity mu_s = E_m tau_m.
+//
+// Power-law surface viscosity (Sec. 5.2, (101)-(102), taken into the membrane): the surface
+// viscosity of triangle t follows its own surface shear rate gamma_t (surface_shear_rate.hpp),
+// mu_s(gamma_t) = mu_s(k) (gamma_t / k)^(n - 1) with gamma_t / k floored at gamma_floor (a rigid
+// motion has gamma = 0, where mu_s diverges for n < 1), and with it its relaxation time,
+// tau_t = mu_s(gamma_t) / E_m = tau_m (gamma_t / k)^(n - 1): tau_m is the one at gamma = k.
+// n = 1 is the plain standard linear solid, step for step.
+struct PowerLawRelaxation {
+  bool on = false;
+  double n = 1;               // flow behaviour index (102)
+  double shear_rate = 0;      // k (per time step): gamma is measured in units of k
+  double gamma_floor = 0.01;  // smallest gamma / k used in (102)
+};
+
 struct MaxwellElement {
   double E_m = 0;    // 0: purely elastic
-  double tau_m = 0;  // relaxation time (time steps)
+  double tau_m = 0;  // relaxation time (time steps); with a power law, the one at gamma = k
   double dt = 1;     // time step
+  PowerLawRelaxation power_law = {};
 };
 
 class ElasticMembrane {
@@ -56,8 +71,13 @@ class ElasticMembrane {
   double reference_total_area() const;
   const Constitutive& law() const { return law_; }
 
+  // The surface shear rate gamma_t / k of every triangle over the last step (power law only;
+  // empty before the first step).
+  const std::vector<double>& surface_shear_rates() const { return gamma_; }
+
   // Restart points: the SLS memory (Q and S_m of the last step per triangle, 2x2 each, flat
-  // column-major, 8 numbers per triangle; empty before the first step or without SLS).
+  // column-major, 8 numbers per triangle, 12 with a power law (and C of the last step); empty
+  // before the first step or without SLS).
   std::vector<double> memory() const;
   bool memory_started() const { return memory_started_; }
   void restore_memory(const std::vector<double>& flat, bool started);  // throws on a size mismatch
@@ -68,11 +88,14 @@ class ElasticMembrane {
   std::vector<Mat2> Dm_inv_;
   std::vector<double> area0_;
   std::vector<Mat2> Q_, Sm_previous_;  // SLS memory per triangle
+  std::vector<Mat2> C_previous_;       // power law: C of the last step per triangle
+  std::vector<double> gamma_;          // power law: gamma_t / k of the last step
   bool memory_started_ = false;
   // The three corner forces of each triangle, kept between steps so a step allocates nothing
   // (a fresh 360 KB vector per step cost page faults at level 4).
   mutable std::vector<std::array<Vec3, 3>> tri_force_;
 
+  void add_power_law_forces(const Mesh& current, std::vector<Vec3>& force);
   template <class TensionFn>
   void accumulate(const Mesh& current, std::vector<Vec3>& force, TensionFn&& tension) const;
 };

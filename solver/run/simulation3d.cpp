@@ -96,7 +96,7 @@ class Simulation3D {
     });
     // The viscosity field exists only for a contrast (V != 1) or a power-law membrane (K > 0).
     if (s.V != 1.0) contrast_ = std::make_unique<ib::ViscosityContrast<3>>(grid_, units_.nu, units_.nu_inside);
-    if (s.power_law_K > 0) {
+    if (s.power_law_K > 0 && s.power_law_model == "fluid_shell") {
       power_law_ = std::make_unique<ib::PowerLawViscosity<3>>(
           grid_, kernel_, ib::PowerLawParameters{s.power_law_K, s.power_law_n, units_.nu, s.a, units_.shear_rate});
       if (contrast_) base_nu_.assign(grid_.size(), units_.nu);
@@ -217,7 +217,7 @@ class Simulation3D {
         {"centroid_z", (d.centroid.z() - 0.5 * grid_.nz) / a},
         {"max_speed", std::sqrt(umax2)},
     };
-    if (power_law_) std::tie(r["gamma_min"], r["gamma_max"]) = gamma_range();
+    if (scene_.power_law_K > 0) std::tie(r["gamma_min"], r["gamma_max"]) = gamma_range();
     return r;
   }
 
@@ -380,6 +380,15 @@ class Simulation3D {
       p.maxwell = m3::MaxwellElement{E_m, mu_limit / E_m, 1.0};
       tau_m_ = mu_limit / E_m;
     }
+    if (s.power_law_K > 0 && s.power_law_model == "membrane") {
+      // The power law in the membrane (scene power_law.model): the SLS's Maxwell element with the
+      // surface viscosity (102) mu_s(gamma) = K a mu_a (gamma / k)^(n - 1) per triangle, so its
+      // Kelvin-Voigt limit is the power-law membrane and n = 1 is eta = K (physical reading).
+      const double E_m = s.G * shear_modulus_;
+      const double mu_s_at_k = s.power_law_K * a * units_.nu;  // rho = 1: mu_a = nu
+      tau_m_ = mu_s_at_k / E_m;
+      p.maxwell = m3::MaxwellElement{E_m, tau_m_, 1.0, m3::PowerLawRelaxation{true, s.power_law_n, units_.shear_rate}};
+    }
     E_B_ = s.E_b * a * a * units_.E_s;
     p.E_B = E_B_;
     if (s.reference_case == "B") {
@@ -421,8 +430,16 @@ class Simulation3D {
     }
   }
 
-  // Surface shear rate (101) over the membrane nodes, in units of k (power law only).
+  // Surface shear rate (101), in units of k (power law only): over the membrane nodes with the
+  // fluid shell (the lattice gradient (99)-(100)), over the triangles in the membrane reading
+  // (their own motion over the last step; 0 before the first).
   std::pair<double, double> gamma_range() const {
+    if (!power_law_) {
+      const auto& g = forces_.elastic().surface_shear_rates();
+      if (g.empty()) return {0.0, 0.0};
+      const auto [lo, hi] = std::minmax_element(g.begin(), g.end());
+      return {*lo, *hi};
+    }
     const auto& g = power_law_->gamma();
     const auto [lo, hi] = std::minmax_element(g.begin(), g.end());
     return {*lo / units_.shear_rate, *hi / units_.shear_rate};
@@ -528,15 +545,22 @@ std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, const Ru
   out.set_attribute("C", scene.C);
   out.set_attribute("G", scene.G);
   out.set_attribute("reference_case", scene.reference_case);
-  out.set_attribute("viscoelastic", scene.eta > 0 ? std::string("standard linear solid (63)-(67), tau_m = mu_s/E_m") : std::string("none"));
+  const bool membrane_power_law = scene.power_law_K > 0 && scene.power_law_model == "membrane";
+  out.set_attribute("viscoelastic", scene.eta > 0 ? std::string("standard linear solid (63)-(67), tau_m = mu_s/E_m")
+                                    : membrane_power_law ? std::string("standard linear solid (63)-(67), tau = mu_s(gamma)/E_m per triangle (power law (102))")
+                                                         : std::string("none"));
   out.set_attribute("sls_viscosity", scene.sls_viscosity == "dissertation"
                                          ? std::string("dissertation: (63) read literally, Kelvin-Voigt limit mu_s/3 = eta a mu_a/3")
                                          : std::string("physical: Kelvin-Voigt limit mu_s = eta a mu_a"));
-  if (scene.eta > 0) out.set_attribute("tau_m", sim.tau_m());
+  if (scene.eta > 0 || (scene.power_law_K > 0 && scene.power_law_model == "membrane")) out.set_attribute("tau_m", sim.tau_m());
   out.set_attribute("delta", scene.kernel == "peskin4"
                                  ? std::string("peskin4: Peskin 4-point (zero first moment), not the cosine (18): README")
                                  : scene.kernel);
-  if (scene.power_law_K > 0)
+  if (scene.power_law_K > 0 && scene.power_law_model == "membrane")
+    out.set_attribute("power_law", std::string("membrane: mu_s = K a mu_a (gamma/k)^(n - 1) (102) per triangle, gamma = sqrt(2 tr D_s^2) (101) of the triangle's "
+                                               "own surface rate of deformation over the last step, in units of k, floored at 0.01; the "
+                                               "Maxwell element of the standard linear solid (63)-(67) with E_m = G E_s and tau = mu_s / E_m"));
+  else if (scene.power_law_K > 0)
     out.set_attribute("power_law", std::string("mu_mem = K a mu_a (gamma/k)^(n - 1) (102), a surface viscosity like mu_s = eta a mu_a; gamma = sqrt(2 tr D^2) (101) of the "
                                                "surface rate of deformation (99)-(100), in units of k, floored at 0.01; spread "
                                                "with the Voronoi areas (103) and added to the fluid viscosity (104)"));

@@ -229,11 +229,21 @@ Scene Scene::from_json(const json& j, const std::string& source) {
     ObjectReader p(pl, source, r.child_path("power_law"));
     s.power_law_K = p.number("K", 0.0, 0.0, 1e3);
     s.power_law_n = p.number("n", 1.0, 0.0, 3.0, true);
+    s.power_law_model = p.choice("model", std::string("fluid_shell"), {"fluid_shell", "membrane"});
     // The 2D driver refuses it (simulation2d.cpp); `capsule check` and `study plan` must too.
     if (s.dim == 2 && s.power_law_K > 0)
       p.fail("K", "the power-law membrane viscosity (Sec. 5.2) is a 3D model; in 2D use eta (Kelvin-Voigt)",
              "0 in 2D");
-    p.refuse_unknown({"K", "n"});
+    // The membrane reading is the standard linear solid's Maxwell element with a power-law
+    // viscosity: it replaces the Kelvin-Voigt eta, it is not added to it.
+    if (s.power_law_model == "membrane" && s.power_law_K > 0 && s.eta > 0)
+      p.fail("model", "\"membrane\" puts the power law in the membrane's own viscous element, which eta = " +
+                          std::to_string(s.eta) + " already sets",
+             "eta = 0 with model \"membrane\", or model \"fluid_shell\"");
+    if (s.power_law_model == "membrane" && s.power_law_K > 0 && !(s.G > 0))
+      p.fail("model", "\"membrane\" needs the Maxwell modulus G = E_m / E_s > 0", "G > 0");
+    if (!(s.power_law_K > 0)) s.power_law_model = "fluid_shell";  // no power law: the key means nothing
+    p.refuse_unknown({"K", "n", "model"});
   }
   {
     json conv = r.object("conventions", false);
@@ -363,6 +373,8 @@ json Scene::to_json() const {
   j["reference_case"] = reference_case;
   j["volume_penalty"] = volume_penalty;
   j["power_law"] = {{"K", power_law_K}, {"n", power_law_n}};
+  // Written only when not the default, so the ids of members run before the key stay.
+  if (power_law_model != "fluid_shell") j["power_law"]["model"] = power_law_model;
   j["conventions"] = {{"sls_viscosity", sls_viscosity}, {"E_b_2d", E_b_2d}};
   // Written only when not the default, so the ids of members run before the key stay.
   if (biconcave_2d != "equivalent") j["conventions"]["biconcave_2d"] = biconcave_2d;
@@ -398,7 +410,8 @@ const std::map<std::string, json>& Scene::omitted_defaults(int dim) {
                                                  {"resolution.precision", "double"},
                                                  {"resolution.marker_inset", 0.0},
                                                  {"resolution.kelvin_voigt_step", "approximate_mobility"}};
-  static const std::map<std::string, json> d3 = {{"resolution.membrane_update", "euler"},
+  static const std::map<std::string, json> d3 = {{"power_law.model", "fluid_shell"},
+                                                 {"resolution.membrane_update", "euler"},
                                                  {"resolution.marker_inset", 0.0},
                                                  {"resolution.kelvin_voigt_step", "approximate_mobility"}};
   return dim == 2 ? d2 : d3;

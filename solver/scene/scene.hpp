@@ -53,6 +53,12 @@ struct Scene {
   double volume_penalty = 0;   // K_v of (84), in units of E_s / a; 0 = off
   double power_law_K = 0;      // (102), dimensionless (gamma in units of k); 0 = off
   double power_law_n = 1;
+  // Where the power-law viscosity acts (3D): "fluid_shell": the text's (103)-(104), spread over
+  // the kernel's four lattice spacings and added to the fluid viscosity there (its shell is
+  // four lattice spacings thick whatever a, so it moves with the lattice); "membrane": a
+  // surface viscosity in the membrane mechanics, the standard linear solid's Maxwell element
+  // with mu_s(gamma) per triangle (solver/membrane3d/elasticity.hpp), resolution-independent.
+  std::string power_law_model = "fluid_shell";
   // Readings of the dissertation that differ from the physical definitions (docs/conventions.md
   // "Conventions"); the physical ones are the default, the text's are there so its tables
   // can be regenerated and the difference explained.

@@ -83,9 +83,10 @@ CostEstimate estimate_cost(const nlohmann::json& canonical_scene) {
     const double vertices = 10.0 * std::pow(4.0, scene.mesh_level) + 2.0;
     const double support = scene.kernel == "linear2" ? 8.0 : scene.kernel == "roma3" ? 27.0 : 64.0;
     double per_vertex = k3DCouplingPerVertex * support / 64.0 + k3DElasticPerVertex;
-    if (scene.eta > 0) per_vertex += k3DSlsPerVertex;
+    const bool membrane_power_law = scene.power_law_K > 0 && scene.power_law_model == "membrane";
+    if (scene.eta > 0 || membrane_power_law) per_vertex += k3DSlsPerVertex;  // the power law's own SLS step (not measured apart)
     if (scene.E_b > 0 || scene.volume_penalty > 0) per_vertex += k3DCurvaturePerVertex;
-    if (scene.power_law_K > 0) per_vertex += k3DPowerLawPerVertex;
+    if (scene.power_law_K > 0 && !membrane_power_law) per_vertex += k3DPowerLawPerVertex;
     if (scene.V != 1.0) per_vertex += k3DContrastPerVertex;
     c.membrane_seconds_per_step = vertices * per_vertex;
   }

@@ -38,6 +38,15 @@ TEST_CASE("3D restart: power-law membrane viscosity, bitwise after a kill", "[ca
   require_restart_is_bitwise(dir, write_scene(dir, "s", s), 201, 202);  // of 384 steps (tau = 1.5)
 }
 
+TEST_CASE("3D restart: power law in the membrane, bitwise after a kill", "[capsule3d][restart]") {
+  // Its memory holds C of the last step as well (the surface shear rate (101) is a difference).
+  const fs::path dir = scratch("3d_power_membrane");
+  nlohmann::json s = tiny_3d();
+  s["E_b"] = 0;
+  s["power_law"] = {{"K", 5}, {"n", 0.7}, {"model", "membrane"}};
+  require_restart_is_bitwise(dir, write_scene(dir, "s", s), 201, 202);  // of 384 steps (tau = 1.5)
+}
+
 TEST_CASE("3D restart: the Adams-Bashforth position update keeps its velocity history", "[capsule3d][restart]") {
   // adams_bashforth2 reads the last step's U: a restart point that lost it would take an Euler
   // step after the restart and the series would differ in the last bits.

@@ -171,6 +171,36 @@ TEST_CASE("resolution.kelvin_voigt_step: approximate_mobility by default and lef
                     Catch::Contains("resolution.kelvin_voigt_step: Kelvin-Voigt step \"exact_mobility\" is the 2D membrane's"));
 }
 
+TEST_CASE("power_law.model: fluid_shell by default and left out of the canonical text; membrane replaces eta", "[scene]") {
+  json j = minimal_2d();
+  j["dim"] = 3;
+  j["shape"] = "sphere";
+  j["power_law"] = {{"K", 10}, {"n", 0.64}};
+  const Scene d = Scene::from_json(j, "t.json");
+  CHECK(d.power_law_model == "fluid_shell");
+  // The default is not written, so the ids of members run before the key existed stay.
+  CHECK_FALSE(d.to_json()["power_law"].contains("model"));
+  CHECK(Scene::omitted_defaults(3).at("power_law.model") == "fluid_shell");
+  j["power_law"]["model"] = "fluid_shell";
+  CHECK(Scene::from_json(j, "t.json").to_json() == d.to_json());
+  j["power_law"]["model"] = "membrane";
+  const Scene m = Scene::from_json(j, "t.json");
+  CHECK(m.power_law_model == "membrane");
+  CHECK(m.to_json()["power_law"]["model"] == "membrane");
+  CHECK(Scene::from_json(m.to_json(), "t.json").power_law_model == "membrane");  // runs as it says
+  CHECK(m.to_json() != d.to_json());  // another member id
+  // Without a power law the key means nothing, and does not move the id.
+  j["power_law"] = {{"K", 0}, {"model", "membrane"}};
+  CHECK_FALSE(Scene::from_json(j, "t.json").to_json()["power_law"].contains("model"));
+  // The membrane reading is the SLS's own viscous element: not beside eta.
+  j["power_law"] = {{"K", 10}, {"model", "membrane"}};
+  j["eta"] = 2;
+  CHECK_THROWS_WITH(Scene::from_json(j, "t.json"), Catch::Contains("power_law.model") && Catch::Contains("eta = 0 with model"));
+  j["eta"] = 0;
+  j["power_law"]["model"] = "shell";
+  CHECK_THROWS_WITH(Scene::from_json(j, "t.json"), Catch::Contains("power_law.model: unknown value \"shell\""));
+}
+
 TEST_CASE("the canonical scene does not depend on spelling, and round-trips", "[scene]") {
   json a = minimal_2d();
   json b = json::parse(R"({"eta": 0.0, "V": 1.0, "E_b": 5e-2, "Ca": 4e-2, "shape": "circle", "dim": 2,
