@@ -160,7 +160,7 @@ class StabilitySection : public ReportSection {
     Table lt;
     lt.title = "Stability limits: per parameter, along each line of members that differ only in it";
     lt.header = {"parameter", "held fixed", "members", "stable from", "stable to", "smallest unstable",
-                 "largest unstable", "unstable at (kt of blow-up)", "note"};
+                 "largest unstable", "unstable at (kt of blow-up: cause)", "note"};
     for (const auto& name : names) {
       struct Line {
         nlohmann::json rest;
@@ -187,6 +187,7 @@ class StabilitySection : public ReportSection {
         });
         double stable_lo = k_nan, stable_hi = k_nan, unstable_lo = k_nan, unstable_hi = k_nan;
         std::string unstable_list, note;
+        nlohmann::json unstable_json = nlohmann::json::array();
         for (const Point* pt : line.points) {
           const double x = parameter(*pt->member, name);
           if (pt->status.kind == "complete") {
@@ -195,8 +196,11 @@ class StabilitySection : public ReportSection {
           } else if (pt->status.kind == "unstable") {
             if (std::isnan(unstable_lo)) unstable_lo = x;
             unstable_hi = x;
+            // The edge as the solver named it: where, when and why (the health check that failed).
             unstable_list += (unstable_list.empty() ? "" : ", ") + format_number(x) + " (kt = " +
-                             (std::isfinite(pt->status.kt) ? format_number(pt->status.kt) : std::string("?")) + ")";
+                             (std::isfinite(pt->status.kt) ? format_number(pt->status.kt) : std::string("?")) +
+                             (pt->status.reason.empty() ? std::string() : ": " + pt->status.reason) + ")";
+            unstable_json.push_back({{"value", x}, {"kt", json_number(pt->status.kt)}, {"cause", pt->status.reason}});
           } else {
             note += (note.empty() ? "" : "; ") + format_number(x) + ": " + cell_text(pt->status);
           }
@@ -210,7 +214,7 @@ class StabilitySection : public ReportSection {
         sj["limits"].push_back({{"parameter", name}, {"held_fixed", fixed}, {"members", line.points.size()},
                                 {"stable_from", json_number(stable_lo)}, {"stable_to", json_number(stable_hi)},
                                 {"smallest_unstable", json_number(unstable_lo)},
-                                {"largest_unstable", json_number(unstable_hi)}});
+                                {"largest_unstable", json_number(unstable_hi)}, {"unstable", unstable_json}});
       }
       if (lt.rows.size() == rows_before)
         lt.rows.push_back({name, "", "", "", "", "", "", "",

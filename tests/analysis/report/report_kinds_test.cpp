@@ -257,11 +257,22 @@ TEST_CASE("Stability report: statuses per member and parameter pair, limits, no 
 
   const auto limits = lines(slurp(out / "limits.csv"));
   const std::string ca_line = row_starting(limits, "Ca,");
-  CHECK_THAT(ca_line, Contains(",4,0.05,0.5,2,2,2 (kt = 1.25),"));
+  CHECK_THAT(ca_line, Contains(",4,0.05,0.5,2,2,2 (kt = 1.25: inverted triangle),"));
   const std::string eb_line = row_starting(limits, "E_b,");
-  CHECK_THAT(eb_line, Contains(",4,0,0.1,1,1,1 (kt = 0.4),0.5: stopped: killed by the user"));
+  CHECK_THAT(eb_line, Contains(",4,0,0.1,1,1,1 (kt = 0.4: non-finite populations),0.5: stopped: killed by the user"));
 
   const auto j = nlohmann::json::parse(slurp(fs::path(req.out_dir) / "fits.json"));
+  // Each line's edge: the unstable members with the kt and the cause of their blow-up.
+  bool ca_edge = false;
+  for (const auto& l : j["stability"]["limits"])
+    if (l["parameter"] == "Ca") {
+      REQUIRE(l["unstable"].size() == 1);
+      CHECK(l["unstable"][0]["value"] == 2.0);
+      CHECK(l["unstable"][0]["kt"] == 1.25);
+      CHECK(l["unstable"][0]["cause"] == "inverted triangle");
+      ca_edge = true;
+    }
+  CHECK(ca_edge);
   CHECK(j["stability"]["counts"]["unstable"] == 2);
   CHECK(j["stability"]["counts"]["complete"] == 3);
   CHECK(files_with_nan(req.out_dir) == std::vector<std::string>{});
