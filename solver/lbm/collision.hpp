@@ -27,7 +27,9 @@ struct Collision {
   static constexpr int P = B::P;
 
   // Collides populations f (in place -> post-collision) at one node.
-  // force: body-force density F; s_nu: shear rate of this node.
+  // force: body-force density F; s_nu: shear rate of this node. Model: relaxation.hpp (trt:
+  // even non-conserved moments at s_nu, odd ones at trt_odd_rate(s_nu)).
+  template <CollisionModel model = CollisionModel::mrt>
   // Returns rho and u = (sum f c + F/2)/rho through the references.
   [[gnu::always_inline]] static inline void collide(double (&f)[Q], const double (&force)[3], double s_nu,
                                                     double& rho, double (&u)[3]) {
@@ -83,7 +85,8 @@ struct Collision {
         });
         meq += quad * half_inv_rho;
         meq *= 1.0 / double(L::weight_denominator);
-        const double s = relaxation_rate<L>(group, s_nu);  // group is a constant: folds away
+        double s = relaxation_rate<L>(group, s_nu);  // group is a constant: folds away
+        if constexpr (model == CollisionModel::trt) s = B::parity[k] == 1 ? s_nu : trt_odd_rate(s_nu);
         g[k] = -s * (m - meq) * inv_norm;
       }
     });

@@ -103,7 +103,10 @@ void Fluid<L>::step_in() {
   if (streaming_ == Streaming::in_place) {
     InPlaceFields<T> a{nx_, ny_, nz_, n_, rows_, g.data(), force_.data(), velocity_.data(), density_.data(),
                        rates, macro, s_nu_, u_bottom_, u_top_};
-    if (rates) in_place_stream_collide<L, T, T, true>(a, swapped_);
+    const bool trt = collision_ == CollisionModel::trt;
+    if (rates && trt) in_place_stream_collide<L, T, T, true, true>(a, swapped_);
+    else if (rates) in_place_stream_collide<L, T, T, true>(a, swapped_);
+    else if (trt) in_place_stream_collide<L, T, T, false, true>(a, swapped_);
     else in_place_stream_collide<L, T, T, false>(a, swapped_);
     swapped_ = !swapped_;
     return;
@@ -111,7 +114,10 @@ void Fluid<L>::step_in() {
   Array<T>& g_next = next<T>();
   ShiftedFields<T> a{nx_, ny_, nz_, n_, rows_, g.data(), g_next.data(), force_.data(), velocity_.data(),
                      density_.data(), rates, macro, s_nu_, u_bottom_, u_top_};
-  if (rates) shifted_stream_collide<L, T, T, true>(a);
+  const bool trt = collision_ == CollisionModel::trt;
+  if (rates && trt) shifted_stream_collide<L, T, T, true, true>(a);
+  else if (rates) shifted_stream_collide<L, T, T, true>(a);
+  else if (trt) shifted_stream_collide<L, T, T, false, true>(a);
   else shifted_stream_collide<L, T, T, false>(a);
   g.swap(g_next);
 }

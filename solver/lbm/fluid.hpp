@@ -48,6 +48,8 @@
 // recomputed. set_uniform_viscosity() returns to the uniform mode. s_nu sets the rates
 // of the stresses, e and eps, and (D2Q9) q by (9); see relaxation.hpp for why e and eps
 // follow s_nu (a fixed s_eps with s_e = s_nu is unstable for tau >~ 1.9 (2D) / 1.5 (3D)).
+// set_collision(CollisionModel::trt) switches to the two-relaxation-time rates of
+// relaxation.hpp (odd moments at Lambda = 3/16 from each node's s_nu) from the next step on.
 #include <array>
 #include <cstddef>
 #include <functional>
@@ -57,6 +59,7 @@
 #include "solver/lbm/lattice.hpp"
 #include "solver/lbm/padded_rows.hpp"
 #include "solver/lbm/precision.hpp"
+#include "solver/lbm/relaxation.hpp"
 
 namespace capsule::lbm {
 
@@ -117,6 +120,11 @@ class Fluid {
   double viscosity(std::size_t node) const;
   bool has_viscosity_field() const { return !node_viscosity_.empty(); }
 
+  // The relaxation rates' model (relaxation.hpp); mrt unless set. Not State: the driver sets it
+  // from the scene, like the wall velocity.
+  void set_collision(CollisionModel model) { collision_ = model; }
+  CollisionModel collision() const { return collision_; }
+
   // Sum of all populations (the conserved mass), summed in a fixed order.
   double total_mass() const;
 
@@ -175,6 +183,7 @@ class Fluid {
 
   Precision precision_;
   Streaming streaming_;
+  CollisionModel collision_ = CollisionModel::mrt;
   bool swapped_ = false;                // in place: after an even step (AA)
   PaddedRows rows_;                     // layout of one population's array
   // Populations f_i - w_i, SoA, padded rows; only the arrays of the precision in use are

@@ -45,7 +45,7 @@ struct InPlaceFields {
 
 // One node of either step: load through in[], collide, store through out[] (the caller
 // sets the pointers and x offsets of the step).
-template <class L, class T, class A, bool per_node, bool macro, bool bottom_wall, bool top_wall, bool odd>
+template <class L, class T, class A, bool per_node, bool trt, bool macro, bool bottom_wall, bool top_wall, bool odd>
 [[gnu::flatten]] CAPSULE_LBM_FAST_CLONE_ATTR void in_place_row(const InPlaceFields<T>& a, int y, int z) {
   constexpr int Q = L::Q;
   using B = MomentBasis<L>;
@@ -94,7 +94,7 @@ template <class L, class T, class A, bool per_node, bool macro, bool bottom_wall
     else s_nu = s_uniform;
     A rho, u[3];
     // Always the forced collision (F = 0 where not read), as in shifted_stream_collide.hpp.
-    SplitCollision<L, A>::template collide<true>(g, F, s_nu, rho, u);
+    SplitCollision<L, A>::template collide<true, trt>(g, F, s_nu, rho, u);
     if constexpr (macro) {
       rho_out[x] = double(rho);
       static_for<L::D>([&](auto d) __attribute__((always_inline)) { vel[d][x] = double(u[d]); });
@@ -114,13 +114,13 @@ template <class L, class T, class A, bool per_node, bool macro, bool bottom_wall
   }
 }
 
-template <class L, class T, class A, bool per_node, bool macro, bool odd>
+template <class L, class T, class A, bool per_node, bool trt, bool macro, bool odd>
 inline void in_place_row_walls(const InPlaceFields<T>& a, int y, int z) {
   const bool bottom = (y == 0), top = (y == a.ny - 1);
-  if (bottom && top) in_place_row<L, T, A, per_node, macro, true, true, odd>(a, y, z);
-  else if (bottom) in_place_row<L, T, A, per_node, macro, true, false, odd>(a, y, z);
-  else if (top) in_place_row<L, T, A, per_node, macro, false, true, odd>(a, y, z);
-  else in_place_row<L, T, A, per_node, macro, false, false, odd>(a, y, z);
+  if (bottom && top) in_place_row<L, T, A, per_node, trt, macro, true, true, odd>(a, y, z);
+  else if (bottom) in_place_row<L, T, A, per_node, trt, macro, true, false, odd>(a, y, z);
+  else if (top) in_place_row<L, T, A, per_node, trt, macro, false, true, odd>(a, y, z);
+  else in_place_row<L, T, A, per_node, trt, macro, false, false, odd>(a, y, z);
 }
 
 // The ghost copies around an odd step: to_ghosts = true before it (x = 0 -> slot nx for
@@ -147,7 +147,7 @@ inline void in_place_ghosts(const InPlaceFields<T>& a, long r, bool to_ghosts) {
   });
 }
 
-template <class L, class T, class A, bool per_node>
+template <class L, class T, class A, bool per_node, bool trt = false>
 void in_place_stream_collide(const InPlaceFields<T>& a, bool odd) {
   const long rows = long(a.ny) * long(a.nz);
   const int ny = a.ny;
@@ -155,8 +155,8 @@ void in_place_stream_collide(const InPlaceFields<T>& a, bool odd) {
   auto row_pass = [&](long r, auto odd_c) {
     constexpr bool o = decltype(odd_c)::value;
     const int y = int(r % ny), z = int(r / ny);
-    if (!a.macroscopic_rows || a.macroscopic_rows[r]) in_place_row_walls<L, T, A, per_node, true, o>(a, y, z);
-    else in_place_row_walls<L, T, A, per_node, false, o>(a, y, z);
+    if (!a.macroscopic_rows || a.macroscopic_rows[r]) in_place_row_walls<L, T, A, per_node, trt, true, o>(a, y, z);
+    else in_place_row_walls<L, T, A, per_node, trt, false, o>(a, y, z);
   };
   if (!odd) {
 #pragma omp parallel for schedule(static) if (parallel)

@@ -25,9 +25,41 @@
 //    check ratios 5 and 10;
 //  - the remaining higher-order moments: L::fixed_rate (none in D2Q9; pi and m at 1.8
 //    in D3Q19).
+// These are the rates of CollisionModel::mrt, the default. CollisionModel::trt (scene key
+// `resolution.collision`) is the two-relaxation-time collision (Ginzburg): every even
+// non-conserved moment at s_nu (as above: stresses, e, eps, and now also D3Q19's pi), every
+// odd one (q, and D3Q19's m) at s_minus with the "magic" product
+//   Lambda = (1/s_nu - 1/2)(1/s_minus - 1/2) = 3/16
+// at every node. Why: with the MRT rates the odd moments' Lambda is (1/s_nu - 1/2)^2 for q,
+// so it grows with the node's viscosity, and the steady Stokes solution of the lattice
+// Boltzmann scheme depends on Lambda (Ginzburg & d'Humieres 2003; Ginzburg, Verhaeghe &
+// d'Humieres 2008): inside a capsule V times more viscous, Lambda = (3 V nu)^2 moves the
+// solution with tau. With Lambda fixed, the solution of given physical numbers is the same
+// for every tau. 3/16 is the value for which half-way bounce-back puts a Poiseuille wall
+// exactly half-way; measured in docs/findings/accuracy_and_stability.md "Viscosity contrast
+// and the relaxation time".
+#include <stdexcept>
+#include <string>
+
 #include "solver/lbm/lattice.hpp"
 
 namespace capsule::lbm {
+
+enum class CollisionModel { mrt, trt };
+// The scene's resolution.collision: "mrt" or "trt".
+inline CollisionModel collision_from_name(const std::string& name) {
+  if (name == "mrt") return CollisionModel::mrt;
+  if (name == "trt") return CollisionModel::trt;
+  throw std::invalid_argument("unknown collision model \"" + name + "\" (mrt, trt)");
+}
+
+// TRT: the odd moments' rate from the node's s_nu, Lambda = trt_magic.
+inline constexpr double trt_magic = 3.0 / 16.0;
+template <class A>
+constexpr A trt_odd_rate(A s_nu) {
+  const A tp = A(1) / s_nu - A(0.5);  // 3 nu
+  return tp / (A(0.5) * tp + A(trt_magic));
+}
 
 // (8)/(13) solved for s_nu.
 constexpr double shear_rate_from_viscosity(double nu) { return 1.0 / (3.0 * nu + 0.5); }

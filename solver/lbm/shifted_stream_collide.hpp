@@ -54,7 +54,7 @@ struct ShiftedFields {
 };
 
 // flatten: inline the whole collision (lambdas included) so the x loop vectorises.
-template <class L, class T, class A, bool per_node, bool macro, bool bottom_wall, bool top_wall>
+template <class L, class T, class A, bool per_node, bool trt, bool macro, bool bottom_wall, bool top_wall>
 [[gnu::flatten]] CAPSULE_LBM_FAST_CLONE_ATTR void shifted_stream_collide_row(const ShiftedFields<T>& a, int y, int z) {
   constexpr int Q = L::Q;
   using B = MomentBasis<L>;
@@ -101,7 +101,7 @@ template <class L, class T, class A, bool per_node, bool macro, bool bottom_wall
     // operations (and the same FMA contractions) as a macroscopic row with zero force, so a
     // node's populations do not depend on whether its row is flagged (bitwise; the
     // macroscopic-region test checks it).
-    SplitCollision<L, A>::template collide<true>(g, F, s_nu, rho, u);
+    SplitCollision<L, A>::template collide<true, trt>(g, F, s_nu, rho, u);
     if constexpr (macro) {
       rho_out[x] = double(rho);
       static_for<L::D>([&](auto d) __attribute__((always_inline)) { vel[d][x] = double(u[d]); });
@@ -141,16 +141,16 @@ template <class L, class T, class A, bool per_node, bool macro, bool bottom_wall
   });
 }
 
-template <class L, class T, class A, bool per_node, bool macro>
+template <class L, class T, class A, bool per_node, bool trt, bool macro>
 inline void shifted_row_walls(const ShiftedFields<T>& a, int y, int z) {
   const bool bottom = (y == 0), top = (y == a.ny - 1);
-  if (bottom && top) shifted_stream_collide_row<L, T, A, per_node, macro, true, true>(a, y, z);
-  else if (bottom) shifted_stream_collide_row<L, T, A, per_node, macro, true, false>(a, y, z);
-  else if (top) shifted_stream_collide_row<L, T, A, per_node, macro, false, true>(a, y, z);
-  else shifted_stream_collide_row<L, T, A, per_node, macro, false, false>(a, y, z);
+  if (bottom && top) shifted_stream_collide_row<L, T, A, per_node, trt, macro, true, true>(a, y, z);
+  else if (bottom) shifted_stream_collide_row<L, T, A, per_node, trt, macro, true, false>(a, y, z);
+  else if (top) shifted_stream_collide_row<L, T, A, per_node, trt, macro, false, true>(a, y, z);
+  else shifted_stream_collide_row<L, T, A, per_node, trt, macro, false, false>(a, y, z);
 }
 
-template <class L, class T, class A, bool per_node>
+template <class L, class T, class A, bool per_node, bool trt = false>
 void shifted_stream_collide(const ShiftedFields<T>& a) {
   const long rows = long(a.ny) * long(a.nz);
   const int ny = a.ny;
@@ -158,8 +158,8 @@ void shifted_stream_collide(const ShiftedFields<T>& a) {
 #pragma omp parallel for schedule(static) if (parallel)
   for (long r = 0; r < rows; ++r) {
     const int y = int(r % ny), z = int(r / ny);
-    if (!a.macroscopic_rows || a.macroscopic_rows[r]) shifted_row_walls<L, T, A, per_node, true>(a, y, z);
-    else shifted_row_walls<L, T, A, per_node, false>(a, y, z);
+    if (!a.macroscopic_rows || a.macroscopic_rows[r]) shifted_row_walls<L, T, A, per_node, trt, true>(a, y, z);
+    else shifted_row_walls<L, T, A, per_node, trt, false>(a, y, z);
   }
 }
 

@@ -17,6 +17,12 @@
 // transformed (D3Q19 ~ 230 flops a node instead of ~800).
 //
 // With force = false the force is zero (the kernel skips reading it where nothing spreads).
+//
+// With trt = true (CollisionModel::trt, relaxation.hpp): no extra moments; the even part of
+// every pair, (g_i + g_opp)/2, relaxes at s_nu as above, the odd part (g_i - g_opp)/2 at
+// s_minus = trt_odd_rate(s_nu) towards 3 w_i c_i.j', and the momentum term becomes
+// (1 - s_minus/2) F (the odd relaxation took s_minus F/2 of j + F). The same as Collision<L>
+// with model trt up to round-off (tests/solver/lbm/split_collision_test.cpp).
 #include <type_traits>
 
 #include "solver/lbm/lattice.hpp"
@@ -48,7 +54,7 @@ struct SplitCollision {
 
   // g: shifted populations (in place -> post-collision, still shifted). Returns rho (full,
   // not shifted) and u = (sum f c + F/2)/rho.
-  template <bool with_force>
+  template <bool with_force, bool trt = false>
   [[gnu::always_inline]] static inline void collide(A (&g)[Q], const A (&force)[3], A s_nu, A& rho, A (&u)[3]) {
     A sum[P], diff[P];
     static_for<P>([&](auto p) __attribute__((always_inline)) {
@@ -77,7 +83,7 @@ struct SplitCollision {
     A G[Q];
     static_for<Q>([&](auto kk) __attribute__((always_inline)) {
       constexpr int k = kk;
-      if constexpr (extra(k)) {
+      if constexpr (!trt && extra(k)) {
         A m = A(0);
         if constexpr (B::parity[k] == 1) {
           add<B::M[k][0]>(m, g[0]);
@@ -106,7 +112,10 @@ struct SplitCollision {
     constexpr double wden = double(L::weight_denominator);
     constexpr int jn = B::norm2[momentum_row(0)];
     const A one_minus_s = A(1) - s_nu;
-    const A fscale = (A(1) - A(0.5) * s_nu) * A(1.0 / double(jn));
+    // trt: the odd part's rate and its momentum term (unused otherwise).
+    const A s_odd = trt ? trt_odd_rate(s_nu) : s_nu;
+    const A one_minus_s_odd = A(1) - s_odd;
+    const A fscale = (A(1) - A(0.5) * s_odd) * A(1.0 / double(jn));
     A eq_shift;  // rest population: only the even part
     {
       constexpr double w0 = double(L::weight_numerator[0]) / wden;
@@ -114,7 +123,7 @@ struct SplitCollision {
       A E0 = A(0);
       static_for<Q>([&](auto kk) __attribute__((always_inline)) {
         constexpr int k = kk;
-        if constexpr (extra(k) && B::parity[k] == 1) add<B::M[k][0]>(E0, G[k]);
+        if constexpr (!trt && extra(k) && B::parity[k] == 1) add<B::M[k][0]>(E0, G[k]);
       });
       eq_shift = sw * base + E0;
       g[0] = one_minus_s * g[0] + eq_shift;
@@ -133,17 +142,27 @@ struct SplitCollision {
       A even = sw * (base + A(4.5) * inv_rho * (cj * cj));
       static_for<Q>([&](auto kk) __attribute__((always_inline)) {
         constexpr int k = kk;
-        if constexpr (extra(k) && B::parity[k] == 1) add<B::M[k][i]>(even, G[k]);
+        if constexpr (!trt && extra(k) && B::parity[k] == 1) add<B::M[k][i]>(even, G[k]);
       });
-      // s * odd part of g_eq + momentum + extra odd moments
-      A odd = (A(3) * sw) * cj;
-      if constexpr (with_force) odd += fscale * cF;
-      static_for<Q>([&](auto kk) __attribute__((always_inline)) {
-        constexpr int k = kk;
-        if constexpr (extra(k) && B::parity[k] == -1) add<B::M[k][i]>(odd, G[k]);
-      });
-      g[i] = one_minus_s * g[i] + (even + odd);
-      g[o] = one_minus_s * g[o] + (even - odd);
+      if constexpr (trt) {
+        // Even part at s_nu, odd part at s_odd: g*_i = (1 - s_nu) g+ + even + (1 - s_odd) g- + odd.
+        A odd = (A(3) * s_odd * A(w)) * cj;
+        if constexpr (with_force) odd += fscale * cF;
+        const A ev = one_minus_s * (A(0.5) * sum[p]) + even;
+        const A od = one_minus_s_odd * (A(0.5) * diff[p]) + odd;
+        g[i] = ev + od;
+        g[o] = ev - od;
+      } else {
+        // s * odd part of g_eq + momentum + extra odd moments
+        A odd = (A(3) * sw) * cj;
+        if constexpr (with_force) odd += fscale * cF;
+        static_for<Q>([&](auto kk) __attribute__((always_inline)) {
+          constexpr int k = kk;
+          if constexpr (extra(k) && B::parity[k] == -1) add<B::M[k][i]>(odd, G[k]);
+        });
+        g[i] = one_minus_s * g[i] + (even + odd);
+        g[o] = one_minus_s * g[o] + (even - odd);
+      }
     });
   }
 

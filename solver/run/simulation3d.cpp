@@ -87,6 +87,7 @@ class Simulation3D {
       : scene_(s), units_(units_for(s, choose_tau(s))), n_(s.grid()),
         grid_{n_[0], n_[1], n_[2]}, fluid_(n_[0], n_[1], n_[2], units_.nu, lbm::precision_from_name(s.precision)) {
     if (s.dim != 3) throw std::invalid_argument("Simulation3D: scene.dim must be 3");
+    fluid_.set_collision(lbm::collision_from_name(s.collision));
     build_membrane();
     U_.assign(3 * mesh_.vertex_count(), 0.0);
     const double k = units_.shear_rate, H = grid_.ny;

@@ -304,8 +304,11 @@ Scene Scene::from_json(const json& j, const std::string& source) {
              "Kelvin-Voigt step \"" + s.kelvin_voigt_step +
                  "\" is the 2D membrane's (the 3D membrane's viscosity is the standard linear solid)",
              "\"approximate_mobility\" in 3D");
+    // Relaxation rates of the fluid (solver/lbm/relaxation.hpp): the text's MRT, or TRT with the
+    // odd moments at Lambda = 3/16, which keeps a viscosity contrast independent of tau.
+    s.collision = q.choice("collision", std::string("mrt"), {"mrt", "trt"});
     q.refuse_unknown({"a", "domain", "segments", "mesh_level", "tau", "kernel", "precision", "membrane_update",
-                      "marker_inset", "kelvin_voigt_step"});
+                      "marker_inset", "kelvin_voigt_step", "collision"});
   }
   {
     json proto = r.object("protocol", true);
@@ -388,6 +391,7 @@ json Scene::to_json() const {
   if (marker_inset != 0.0) j["resolution"]["marker_inset"] = marker_inset;  // likewise (0)
   // Written only when not the default, so the ids of members run before the key stay.
   if (kelvin_voigt_step != "approximate_mobility") j["resolution"]["kelvin_voigt_step"] = kelvin_voigt_step;
+  if (collision != "mrt") j["resolution"]["collision"] = collision;  // likewise (mrt)
   j["protocol"] = {{"shear", phase_json(shear, true)}, {"recover", phase_json(recover, false)}};
   j["output"] = {{"interval_kt", output_interval_kt}, {"shapes_at_kt", shapes_at_kt},
                  {"snapshots", snapshots}};
@@ -409,11 +413,13 @@ const std::map<std::string, json>& Scene::omitted_defaults(int dim) {
   static const std::map<std::string, json> d2 = {{"resolution.membrane_update", "euler"},
                                                  {"resolution.precision", "double"},
                                                  {"resolution.marker_inset", 0.0},
-                                                 {"resolution.kelvin_voigt_step", "approximate_mobility"}};
+                                                 {"resolution.kelvin_voigt_step", "approximate_mobility"},
+                                                 {"resolution.collision", "mrt"}};
   static const std::map<std::string, json> d3 = {{"power_law.model", "fluid_shell"},
                                                  {"resolution.membrane_update", "euler"},
                                                  {"resolution.marker_inset", 0.0},
-                                                 {"resolution.kelvin_voigt_step", "approximate_mobility"}};
+                                                 {"resolution.kelvin_voigt_step", "approximate_mobility"},
+                                                 {"resolution.collision", "mrt"}};
   return dim == 2 ? d2 : d3;
 }
 
