@@ -67,7 +67,6 @@ struct Simulation2D::Impl {
   Impl(const Scene& s, const Units& u, const std::vector<int>& n)
       : scene(s), units(u), grid{n[0], n[1], 1}, fluid(n[0], n[1], 1, u.nu, lbm::precision_from_name(s.precision)),
         membrane(make_membrane(s, u, n)), exact_kv(s.kelvin_voigt_step == "exact_mobility") {
-    fluid.set_collision(lbm::collision_from_name(s.collision));
     U.assign(2 * membrane.size(), 0.0);
     area0 = membrane2d::polygon_area(membrane.positions());
     if (s.V != 1.0) {

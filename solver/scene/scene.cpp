@@ -305,8 +305,11 @@ Scene Scene::from_json(const json& j, const std::string& source) {
                  "\" is the 2D membrane's (the 3D membrane's viscosity is the standard linear solid)",
              "\"approximate_mobility\" in 3D");
     // Relaxation rates of the fluid (solver/lbm/relaxation.hpp): the text's MRT, or TRT with the
-    // odd moments at Lambda = 3/16, which keeps a viscosity contrast independent of tau.
+    // odd moments at Lambda = 3/16, which keeps a viscosity contrast independent of tau. 3D only:
+    // the text's D2Q9 rates are a TRT already (q by (9) is Lambda = 1/12 at every s_nu).
     s.collision = q.choice("collision", std::string("mrt"), {"mrt", "trt"});
+    if (s.dim == 2 && s.collision != "mrt")
+      q.fail("collision", "the 2D rates (9) are a two-relaxation-time collision already (Lambda = 1/12)", "\"mrt\" in 2D");
     q.refuse_unknown({"a", "domain", "segments", "mesh_level", "tau", "kernel", "precision", "membrane_update",
                       "marker_inset", "kelvin_voigt_step", "collision"});
   }

@@ -93,10 +93,10 @@ struct Scene {
   // velocity (stable up to eta ~ 20 at a = 10); "exact_mobility" solves with the immersed
   // boundary's real same-step mobility and force-free velocity (solver/ib/mobility.hpp).
   std::string kelvin_voigt_step = "approximate_mobility";
-  // Relaxation rates of the fluid (solver/lbm/relaxation.hpp): "mrt", the text's rates (the odd
-  // moments' Lambda grows as (3 nu)^2 with a node's viscosity), or "trt", two relaxation times
-  // with the odd moments at Lambda = 3/16 at every node (a viscosity contrast then no longer
-  // moves with tau: docs/findings/accuracy_and_stability.md).
+  // 3D relaxation rates of the fluid (solver/lbm/relaxation.hpp): "mrt", the text's rates (the
+  // odd moments' Lambda grows as (3 nu)^2 with a node's viscosity), or "trt", two relaxation
+  // times with the odd moments at Lambda = 3/16 at every node (a viscosity contrast then no
+  // longer moves with tau: docs/findings/accuracy_and_stability.md). 2D: "mrt" only (a TRT already).
   std::string collision = "mrt";
   PhaseSpec shear;
   PhaseSpec recover;

@@ -199,6 +199,32 @@ TEST_CASE("power_law.model: fluid_shell by default and left out of the canonical
   j["eta"] = 0;
   j["power_law"]["model"] = "shell";
   CHECK_THROWS_WITH(Scene::from_json(j, "t.json"), Catch::Contains("power_law.model: unknown value \"shell\""));
+
+TEST_CASE("resolution.collision: mrt by default and left out of the canonical text; trt 3D only", "[scene]") {
+  json j3 = minimal_2d();
+  j3["dim"] = 3;
+  j3["shape"] = "sphere";
+  j3["V"] = 5;
+  const Scene d = Scene::from_json(j3, "t.json");
+  CHECK(d.collision == "mrt");
+  // The default is not written, so the ids of members run before the key existed stay.
+  CHECK_FALSE(d.to_json()["resolution"].contains("collision"));
+  CHECK(Scene::omitted_defaults(2).at("resolution.collision") == "mrt");
+  CHECK(Scene::omitted_defaults(3).at("resolution.collision") == "mrt");
+  j3["resolution"] = {{"collision", "mrt"}};
+  CHECK(Scene::from_json(j3, "t.json").to_json() == d.to_json());
+  j3["resolution"] = {{"collision", "trt"}};
+  const Scene t = Scene::from_json(j3, "t.json");
+  CHECK(t.collision == "trt");
+  CHECK(t.to_json()["resolution"]["collision"] == "trt");
+  CHECK(Scene::from_json(t.to_json(), "t.json").collision == "trt");  // runs as it says
+  CHECK(t.to_json() != d.to_json());                                  // another member id
+  j3["resolution"] = {{"collision", "bgk"}};
+  CHECK_THROWS_WITH(Scene::from_json(j3, "t.json"),
+                    Catch::Contains("resolution.collision: unknown value \"bgk\"") && Catch::Contains("mrt | trt"));
+  json j2 = minimal_2d();
+  j2["resolution"] = {{"collision", "trt"}};
+  CHECK_THROWS_WITH(Scene::from_json(j2, "t.json"), Catch::Contains("resolution.collision: the 2D rates (9)"));
 }
 
 TEST_CASE("the canonical scene does not depend on spelling, and round-trips", "[scene]") {
