@@ -41,7 +41,10 @@ double choose_tau_2d(const Scene& scene) {
 //  - a more viscous interior (V > 1) keeps tau = 1: at V = 5, D_xy(kt = 3) is 0.2059 / 0.2183 /
 //    0.2329 for tau = 0.7 / 1 / 1.5 (the inside relaxation time 0.5 + 3 V nu is 1.5 / 3 / 5.5),
 //    a tau-dependent error of several percent that no choice of tau keeps within 0.5 % of
-//    tau = 1 (docs/guide/model.md "Relaxation time": open accuracy question of viscosity-contrast members); V = 2: +2.0 % at 1.5.
+//    tau = 1 (docs/guide/model.md "Relaxation time"); V = 2: +2.0 % at 1.5. The cause is the D3Q19 odd
+//    moments' rates (their Lambda grows with the inside viscosity); resolution.collision = "trt"
+//    removes it (docs/findings/accuracy_and_stability.md "Viscosity contrast and the relaxation
+//    time"), but this rule still keeps tau = 1 for V > 1 so that members' numbers do not move.
 //  - stability: tau = 3 ran for Ca = 0.05 and 0.2 (S = Re nu/(a Ca) = 0.17 and 0.04); the
 //    largest bending number B = E_b a Re nu/Ca seen stable is 0.17 (a = 10, tau = 1, E_b = 0.1,
 //    Ca = 0.05). The 2D bounds (S 0.04, B 0.12) do not carry over: 3D ran stably at 4 x S.
