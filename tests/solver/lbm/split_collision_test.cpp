@@ -119,11 +119,18 @@ TEST_CASE("Split collision equals the reference collision with the TRT rates (D2
   CHECK(wu < 5e-6);
 }
 
-TEST_CASE("TRT odd rate: Lambda = (1/s_nu - 1/2)(1/s_minus - 1/2) = 3/16 at every viscosity", "[lbm]") {
+// The product Lambda = (1/s_nu - 1/2)(1/s_odd - 1/2) of the odd moments' rates: 3/16 for TRT at
+// every viscosity; the text's D2Q9 heat-flux rate (9) is 1/12 at every viscosity (so 2D's MRT is
+// a TRT), while D3Q19's s_q = s_nu gives (tau - 1/2)^2, which grows with a node's viscosity.
+TEST_CASE("TRT odd rate: Lambda = 3/16 at every viscosity; the D2Q9 rate (9) is Lambda = 1/12", "[lbm]") {
   for (double tau : {0.51, 0.7, 1.0, 1.5, 3.0, 5.5, 10.5}) {
     const double s_minus = trt_odd_rate(1.0 / tau);
     CHECK(s_minus > 0.0);
     CHECK(s_minus < 2.0);
     CHECK(std::abs((tau - 0.5) * (1.0 / s_minus - 0.5) - 3.0 / 16.0) < 1e-14);
+    const double s_q2 = D2Q9::heat_flux_rate(1.0 / tau);
+    CHECK(std::abs((tau - 0.5) * (1.0 / s_q2 - 0.5) - 1.0 / 12.0) < 1e-14);
+    const double s_q3 = D3Q19::heat_flux_rate(1.0 / tau);
+    CHECK(std::abs((tau - 0.5) * (1.0 / s_q3 - 0.5) - (tau - 0.5) * (tau - 0.5)) < 1e-12);
   }
 }
