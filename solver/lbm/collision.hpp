@@ -29,8 +29,8 @@ struct Collision {
   // Collides populations f (in place -> post-collision) at one node.
   // force: body-force density F; s_nu: shear rate of this node. Model: relaxation.hpp (trt:
   // even non-conserved moments at s_nu, odd ones at trt_odd_rate(s_nu)).
-  template <CollisionModel model = CollisionModel::mrt>
   // Returns rho and u = (sum f c + F/2)/rho through the references.
+  template <CollisionModel model = CollisionModel::mrt>
   [[gnu::always_inline]] static inline void collide(double (&f)[Q], const double (&force)[3], double s_nu,
                                                     double& rho, double (&u)[3]) {
     // Pair sums and differences: even moments need only sum, odd only diff.
