@@ -199,6 +199,7 @@ TEST_CASE("power_law.model: fluid_shell by default and left out of the canonical
   j["eta"] = 0;
   j["power_law"]["model"] = "shell";
   CHECK_THROWS_WITH(Scene::from_json(j, "t.json"), Catch::Contains("power_law.model: unknown value \"shell\""));
+}
 
 TEST_CASE("resolution.collision: mrt by default and left out of the canonical text; trt 3D only", "[scene]") {
   json j3 = minimal_2d();
