@@ -9,19 +9,12 @@
 #include "solver/membrane3d/elasticity.hpp"
 #include "solver/membrane3d/shapes.hpp"
 #include "solver/membrane3d/surface_shear_rate.hpp"
+#include "tests/solver/membrane3d/single_triangle.hpp"
 
 using namespace capsule::membrane3d;
+using capsule::membrane3d::testing::single_triangle;
 
 namespace {
-
-Mesh single_triangle(const Vec3& a, const Vec3& b, const Vec3& c) {
-  Mesh m;
-  m.x = {a, b, c};
-  m.triangles = {{0, 1, 2}};
-  m.vertex_triangles = {{0}, {0}, {0}};
-  m.corner_in_triangle = {{0}, {1}, {2}};
-  return m;
-}
 
 // The reference triangle under the planar deformation gradient F (x, y in its plane), then
 // turned rigidly by R: R changes the positions, not C.

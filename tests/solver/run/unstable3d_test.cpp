@@ -33,7 +33,7 @@ TEST_CASE("a 3D member past the Ca edge ends unstable with the kt and the cause"
   const double kt = std::stod(d.status.substr(17));
   CHECK(kt > 3.0);   // a slow blow-up: the long protocol is what finds it
   CHECK(kt < 12.0);
-  // The cause is named: one of the health checks (member-files.md "Health checks").
+  // The cause is named: one of the health checks (docs/guide/member-files.md "Health checks").
   const std::string cause = d.status.substr(d.status.find(": ") + 2);
   CHECK((cause.find("triangle quality") == 0 || cause.find("inverted triangles") != std::string::npos ||
          cause.find("volume drift") == 0));
