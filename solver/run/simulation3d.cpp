@@ -557,6 +557,10 @@ std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, const Ru
   out.set_attribute("delta", scene.kernel == "peskin4"
                                  ? std::string("peskin4: Peskin 4-point (zero first moment), not the cosine (18): README")
                                  : scene.kernel);
+  out.set_attribute("marker_inset", scene.marker_inset);
+  out.set_attribute("marker_radius", scene.a - scene.marker_inset);
+  out.set_attribute("marker_inset_rule", scene.marker_inset_rule.empty() ? std::string("given")
+                                                                          : scene.marker_inset_rule + ": r_m + d_S(r_m) = a, solver/ib/hydrodynamic_radius.hpp");
   if (scene.power_law_K > 0 && scene.power_law_model == "membrane")
     out.set_attribute("power_law", std::string("membrane: mu_s = K a mu_a (gamma/k)^(n - 1) (102) per triangle, gamma = sqrt(2 tr D_s^2) (101) of the triangle's "
                                                "own surface rate of deformation over the last step, in units of k, floored at 0.01; the "

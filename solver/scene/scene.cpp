@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "solver/ib/hydrodynamic_radius.hpp"
 #include "solver/scene/json_text.hpp"
 
 namespace capsule {
@@ -198,6 +199,18 @@ Scene Scene::from_json(const json& j, const std::string& source) {
   Scene s;
   s.dim = r.integer("dim", 0, 2, 3);
   if (!r.has("dim")) r.fail("dim", "missing required key", "2 | 3");
+  // The physics the scene runs: this solver's (the default), or version 5's defaults, so that
+  // a campaign run before version 6 keeps its members' ids and numbers until it is rerun.
+  if (r.has("physics_version")) {
+    const json& v = j.at("physics_version");
+    const std::string text = v.is_string() ? v.get<std::string>()
+                             : v.is_number_integer() ? std::to_string(v.get<long long>()) : std::string();
+    if (text != capsule::physics_version && text != "5")
+      r.fail("physics_version", "physics version " + message_value(v) + " is not one this solver runs",
+             std::string("\"") + capsule::physics_version + "\" (this solver's) or \"5\"");
+    s.physics_version = text;
+  }
+  const bool v5 = s.physics_version == "5";
   if (s.dim == 2) {
     s.shape = r.choice("shape", std::nullopt, {"circle", "biconcave"});
     s.law = r.choice("law", std::string("hooke"), {"hooke"});
@@ -229,7 +242,10 @@ Scene Scene::from_json(const json& j, const std::string& source) {
     ObjectReader p(pl, source, r.child_path("power_law"));
     s.power_law_K = p.number("K", 0.0, 0.0, 1e3);
     s.power_law_n = p.number("n", 1.0, 0.0, 3.0, true);
-    s.power_law_model = p.choice("model", std::string("fluid_shell"), {"fluid_shell", "membrane"});
+    // "membrane" by default (physics version 6): it converges with a and does not move with the
+    // fluid's tau, where the text's shell (103)-(104) does both (docs/findings/accuracy_and_stability.md).
+    const std::string model_default = v5 ? "fluid_shell" : "membrane";
+    s.power_law_model = p.choice("model", model_default, {"fluid_shell", "membrane"});
     // The 2D driver refuses it (simulation2d.cpp); `capsule check` and `study plan` must too.
     if (s.dim == 2 && s.power_law_K > 0)
       p.fail("K", "the power-law membrane viscosity (Sec. 5.2) is a 3D model; in 2D use eta (Kelvin-Voigt)",
@@ -242,7 +258,7 @@ Scene Scene::from_json(const json& j, const std::string& source) {
              "eta = 0 with model \"membrane\", or model \"fluid_shell\"");
     if (s.power_law_model == "membrane" && s.power_law_K > 0 && !(s.G > 0))
       p.fail("model", "\"membrane\" needs the Maxwell modulus G = E_m / E_s > 0", "G > 0");
-    if (!(s.power_law_K > 0)) s.power_law_model = "fluid_shell";  // no power law: the key means nothing
+    if (!(s.power_law_K > 0)) s.power_law_model = model_default;  // no power law: the key means nothing
     p.refuse_unknown({"K", "n", "model"});
   }
   {
@@ -276,7 +292,10 @@ Scene Scene::from_json(const json& j, const std::string& source) {
                "0 (chosen by the solver) or [0.505, 10]");
       s.tau = t.get<double>();
     }
-    s.kernel = q.choice("kernel", std::string("peskin4"), {"peskin4", "roma3", "linear2", "cosine"});
+    // 3D: Roma, Peskin and Berger's 3-point kernel by default (physics version 6): with the
+    // stresslet's marker inset it has the smaller finite-Ca error of the two measured kernels at
+    // 27 nodes a stencil instead of 64 (docs/findings/immersed_boundary_error_budget.md).
+    s.kernel = q.choice("kernel", std::string(s.dim == 3 && !v5 ? "roma3" : "peskin4"), {"peskin4", "roma3", "linear2", "cosine"});
     // The 2D driver's implicit Kelvin-Voigt step uses the self-mobility of peskin4 (simulation2d.cpp).
     if (s.dim == 2 && s.kernel != "peskin4")
       q.fail("kernel", "kernel \"" + s.kernel + "\" is 3D only", "\"peskin4\" in 2D");
@@ -292,12 +311,41 @@ Scene Scene::from_json(const json& j, const std::string& source) {
       q.fail("membrane_update", "membrane update \"" + s.membrane_update + "\" is 3D only", "\"euler\" in 2D");
     // Markers inside the radius (the immersed boundary's hydrodynamic radius is larger than its
     // markers': capsule rigid-sphere, docs/findings/immersed_boundary_error_budget.md).
-    s.marker_inset = q.number("marker_inset", 0.0, 0.0, 2.0);
-    if (s.dim == 2 && s.marker_inset != 0.0) q.fail("marker_inset", "a marker inset is 3D only", "0 in 2D");
+    // 3D default "stresslet": the inset at which a rigid shell of markers exerts the stresslet of
+    // a sphere of radius a (solver/ib/hydrodynamic_radius.hpp); a number sets it in lattice units.
+    // By default only where the kernel's shell was measured (peskin4, roma3); elsewhere 0.
+    s.marker_inset_rule = s.dim == 3 && !v5 && ib::stresslet_radius_gap(s.kernel) ? "stresslet" : "";
+    s.marker_inset = 0.0;
+    if (q.has("marker_inset")) {
+      const json& m = res.at("marker_inset");
+      if (m.is_string() && m.get<std::string>() == "stresslet") {
+        s.marker_inset_rule = "stresslet";
+      } else if (m.is_number()) {
+        s.marker_inset_rule.clear();
+        s.marker_inset = q.number("marker_inset", 0.0, 0.0, 2.0);
+      } else {
+        q.fail("marker_inset", "marker inset " + message_value(m) + " is neither a number nor a rule",
+               "\"stresslet\" or a number in [0, 2]");
+      }
+    }
+    if (s.dim == 2 && (s.marker_inset != 0.0 || !s.marker_inset_rule.empty()))
+      q.fail("marker_inset", "a marker inset is 3D only", "0 in 2D");
+    if (s.marker_inset_rule == "stresslet") {
+      const auto gap = ib::stresslet_radius_gap(s.kernel);
+      if (!gap)
+        q.fail("marker_inset", "the stresslet's inset is measured for the kernels peskin4 and roma3, not \"" + s.kernel + "\"",
+               "a number in [0, 2] with kernel \"" + s.kernel + "\"");
+      s.marker_inset = ib::stresslet_marker_inset(*gap, s.a);
+      if (!(s.marker_inset >= 0.0))
+        q.fail("marker_inset", "the stresslet's inset has no solution at a = " + std::to_string(s.a) + " with kernel " + s.kernel,
+               "a >= " + std::to_string(ib::stresslet_inset_min_radius(*gap)) + ", or a number in [0, 2]");
+    }
     if (s.marker_inset > 0.25 * s.a)
       q.fail("marker_inset", "marker inset " + std::to_string(s.marker_inset) + " is more than a quarter of a", "[0, a/4]");
     // How the 2D membrane's Kelvin-Voigt viscosity (31) is taken implicitly (simulation2d.cpp).
-    s.kelvin_voigt_step = q.choice("kelvin_voigt_step", std::string("approximate_mobility"),
+    // "exact_mobility" by default (physics version 6): stable at any eta, and the eta <= 12
+    // members move by less than 0.5 % (docs/findings/kelvin_voigt_2d.md).
+    s.kelvin_voigt_step = q.choice("kelvin_voigt_step", std::string(s.dim == 2 && !v5 ? "exact_mobility" : "approximate_mobility"),
                                    {"approximate_mobility", "exact_mobility"});
     if (s.dim == 3 && s.kelvin_voigt_step != "approximate_mobility")
       q.fail("kelvin_voigt_step",
@@ -307,7 +355,7 @@ Scene Scene::from_json(const json& j, const std::string& source) {
     // Relaxation rates of the fluid (solver/lbm/relaxation.hpp): the text's MRT, or TRT with the
     // odd moments at Lambda = 3/16, which keeps a viscosity contrast independent of tau. 3D only:
     // the text's D2Q9 rates are a TRT already (q by (9) is Lambda = 1/12 at every s_nu).
-    s.collision = q.choice("collision", std::string("mrt"), {"mrt", "trt"});
+    s.collision = q.choice("collision", std::string(s.dim == 3 && !v5 ? "trt" : "mrt"), {"mrt", "trt"});
     if (s.dim == 2 && s.collision != "mrt")
       q.fail("collision", "the 2D rates (9) are a two-relaxation-time collision already (Lambda = 1/12)", "\"mrt\" in 2D");
     q.refuse_unknown({"a", "domain", "segments", "mesh_level", "tau", "kernel", "precision", "membrane_update",
@@ -328,7 +376,7 @@ Scene Scene::from_json(const json& j, const std::string& source) {
     s.snapshots = o.choice("snapshots", std::string("none"), {"none", "vtk"});
     o.refuse_unknown({"interval_kt", "shapes_at_kt", "snapshots"});
   }
-  r.refuse_unknown({"dim", "shape", "law", "C", "Re", "Ca", "E_b", "V", "eta", "G", "c0",
+  r.refuse_unknown({"dim", "physics_version", "shape", "law", "C", "Re", "Ca", "E_b", "V", "eta", "G", "c0",
                     "reference_case", "volume_penalty", "power_law", "conventions", "resolution",
                     "protocol", "output"});
   ignore_other_dimension(s);
@@ -378,23 +426,34 @@ json Scene::to_json() const {
   j["c0"] = c0;
   j["reference_case"] = reference_case;
   j["volume_penalty"] = volume_penalty;
-  j["power_law"] = {{"K", power_law_K}, {"n", power_law_n}};
-  // Written only when not the default, so the ids of members run before the key stay.
-  if (power_law_model != "fluid_shell") j["power_law"]["model"] = power_law_model;
-  j["conventions"] = {{"sls_viscosity", sls_viscosity}, {"E_b_2d", E_b_2d}};
-  // Written only when not the default, so the ids of members run before the key stay.
-  if (biconcave_2d != "equivalent") j["conventions"]["biconcave_2d"] = biconcave_2d;
-  j["resolution"] = {{"a", a}, {"domain", domain}, {"segments", segments},
-                     {"mesh_level", mesh_level}, {"tau", tau}, {"kernel", kernel}};
-  // 2D: written only when single, so the ids of 2D members run before the key existed stay.
-  // 3D: always written, so a 3D member id says which precision made it (the default changed).
-  if (dim == 3 || precision != "double") j["resolution"]["precision"] = precision;
-  // Written only when not the default (euler), so the ids of members run before the key stay.
-  if (membrane_update != "euler") j["resolution"]["membrane_update"] = membrane_update;
-  if (marker_inset != 0.0) j["resolution"]["marker_inset"] = marker_inset;  // likewise (0)
-  // Written only when not the default, so the ids of members run before the key stay.
-  if (kelvin_voigt_step != "approximate_mobility") j["resolution"]["kelvin_voigt_step"] = kelvin_voigt_step;
-  if (collision != "mrt") j["resolution"]["collision"] = collision;  // likewise (mrt)
+  if (physics_version == "5") {
+    // Version 5's canonical text, key for key: a key it did not know, or that held its
+    // default, is left out, so the ids of its members stay (omitted_defaults()).
+    j["power_law"] = {{"K", power_law_K}, {"n", power_law_n}};
+    if (power_law_model != "fluid_shell") j["power_law"]["model"] = power_law_model;
+    j["conventions"] = {{"sls_viscosity", sls_viscosity}, {"E_b_2d", E_b_2d}};
+    if (biconcave_2d != "equivalent") j["conventions"]["biconcave_2d"] = biconcave_2d;
+    j["resolution"] = {{"a", a}, {"domain", domain}, {"segments", segments},
+                       {"mesh_level", mesh_level}, {"tau", tau}, {"kernel", kernel}};
+    if (dim == 3 || precision != "double") j["resolution"]["precision"] = precision;
+    if (membrane_update != "euler") j["resolution"]["membrane_update"] = membrane_update;
+    if (!marker_inset_rule.empty()) j["resolution"]["marker_inset"] = marker_inset_rule;
+    else if (marker_inset != 0.0) j["resolution"]["marker_inset"] = marker_inset;
+    if (kelvin_voigt_step != "approximate_mobility") j["resolution"]["kelvin_voigt_step"] = kelvin_voigt_step;
+    if (collision != "mrt") j["resolution"]["collision"] = collision;
+  } else {
+    // Every key: a key's default may change with the physics version, and the id must say
+    // what ran.
+    j["power_law"] = {{"K", power_law_K}, {"n", power_law_n}, {"model", power_law_model}};
+    j["conventions"] = {{"sls_viscosity", sls_viscosity}, {"E_b_2d", E_b_2d}, {"biconcave_2d", biconcave_2d}};
+    j["resolution"] = {{"a", a}, {"domain", domain}, {"segments", segments},
+                       {"mesh_level", mesh_level}, {"tau", tau}, {"kernel", kernel},
+                       {"precision", precision}, {"membrane_update", membrane_update},
+                       {"kelvin_voigt_step", kelvin_voigt_step}, {"collision", collision}};
+    // The rule's name where a rule set it (its value follows from a and the kernel), else the number.
+    if (marker_inset_rule.empty()) j["resolution"]["marker_inset"] = marker_inset;
+    else j["resolution"]["marker_inset"] = marker_inset_rule;
+  }
   j["protocol"] = {{"shear", phase_json(shear, true)}, {"recover", phase_json(recover, false)}};
   j["output"] = {{"interval_kt", output_interval_kt}, {"shapes_at_kt", shapes_at_kt},
                  {"snapshots", snapshots}};
@@ -409,16 +468,22 @@ json Scene::to_json() const {
     if (it.key() != "dim") as_float(it.value());
   j["resolution"]["segments"] = segments;
   j["resolution"]["mesh_level"] = mesh_level;
+  // The member id hashes the scene without this key and with the version after it
+  // (study/campaign/member_id.cpp); it is here so that the solver runs what study planned.
+  j["physics_version"] = physics_version;
   return j;
 }
 
 const std::map<std::string, json>& Scene::omitted_defaults(int dim) {
-  static const std::map<std::string, json> d2 = {{"resolution.membrane_update", "euler"},
+  static const std::map<std::string, json> d2 = {{"power_law.model", "fluid_shell"},
+                                                 {"conventions.biconcave_2d", "equivalent"},
+                                                 {"resolution.membrane_update", "euler"},
                                                  {"resolution.precision", "double"},
                                                  {"resolution.marker_inset", 0.0},
                                                  {"resolution.kelvin_voigt_step", "approximate_mobility"},
                                                  {"resolution.collision", "mrt"}};
   static const std::map<std::string, json> d3 = {{"power_law.model", "fluid_shell"},
+                                                 {"conventions.biconcave_2d", "equivalent"},
                                                  {"resolution.membrane_update", "euler"},
                                                  {"resolution.marker_inset", 0.0},
                                                  {"resolution.kelvin_voigt_step", "approximate_mobility"},

@@ -75,19 +75,26 @@ struct Scene {
   std::string sls_viscosity = "physical";
   std::string E_b_2d = "dimensionless";
   std::string biconcave_2d = "equivalent";
+  // The physics the scene runs (solver/scene/version.hpp): this solver's, or "5", whose defaults
+  // (peskin4 and markers on a, mrt, the power law as a fluid shell, the approximate 2D
+  // Kelvin-Voigt step) and canonical text keep a campaign run before version 6 as it was.
+  std::string physics_version = capsule::physics_version;
   double a = 10;               // capsule (equivalent) radius in lattice nodes
   std::vector<double> domain;  // in units of a: 2D {16, 12}, 3D {10, 10, 8}
   int segments = 140;          // 2D membrane segments
   int mesh_level = 4;          // 3D icosahedron subdivisions (4 -> 2562 vertices)
   double tau = 0;              // relaxation time; 0 = chosen by the solver
-  std::string kernel = "peskin4";  // IB delta (solver/ib/delta.hpp): peskin4, roma3, linear2, cosine
+  std::string kernel = "peskin4";  // IB delta (solver/ib/delta.hpp): peskin4, roma3, linear2, cosine (3D default roma3)
   std::string precision = "double";  // fluid populations: double | single (solver/lbm/precision.hpp)
   // 3D position update (20): euler | previous_velocity | adams_bashforth2 (solver/ib/membrane_update.hpp)
   std::string membrane_update = "euler";
   // 3D: the markers (and the reference shape) sit this many lattice units inside the radius a,
-  // the moduli unchanged (simulation3d.cpp "Marker inset"); 0: on the radius a. A candidate
-  // remedy for the smeared shell's hydrodynamic radius, larger than its markers'.
+  // the moduli unchanged (simulation3d.cpp "Marker inset"), so that the smeared shell, whose
+  // hydrodynamic radius is larger than its markers', acts as the radius a. marker_inset_rule
+  // "stresslet" (the 3D default) computes it from a and the kernel (solver/ib/hydrodynamic_radius.hpp);
+  // empty when the scene gave a number (0: markers on the radius a).
   double marker_inset = 0;
+  std::string marker_inset_rule;
   // 2D implicit Kelvin-Voigt step (31) (solver/membrane2d/membrane.hpp): "approximate_mobility"
   // predicts the node velocities with the scalar self-mobility 2 (3/8)^2 and the last step's
   // velocity (stable up to eta ~ 20 at a = 10); "exact_mobility" solves with the immersed
@@ -107,14 +114,13 @@ struct Scene {
   // Parses and validates; throws SceneError naming source_name, the key and the allowed range.
   static Scene from_json(const nlohmann::json& j, const std::string& source_name);
   static Scene load(const std::string& path);
-  // The complete canonical scene: every key (resolution.precision always in 3D, in 2D only
-  // when "single", so 2D member ids from before the key are unchanged), defaults filled,
-  // numbers typed by the schema.
+  // The complete canonical scene: every key, defaults filled, numbers typed by the schema
+  // (marker_inset as its rule's name where a rule set it).
   nlohmann::json to_json() const;
 
-  // Keys to_json leaves out while they hold their default (so the ids of members run before
-  // the key existed stay): dotted key -> the value an absent key means in a canonical scene
-  // of that dim (resolution.precision is left out only in 2D, where it means "double").
+  // The keys that canonical scenes of physics version 5 and older left out while they held
+  // that version's default: dotted key -> the value an absent key means in such a scene of
+  // that dim. Member files of older physics are read with it (analysis/report/scene_parameter.cpp).
   static const std::map<std::string, nlohmann::json>& omitted_defaults(int dim);
 
   // The precision a scene that does not name one gets: "single" in 3D, "double" in 2D.

@@ -133,7 +133,7 @@ void for_each_member(const Campaign& campaign, const std::function<void(Member&&
       }
       m.case_name = cc.name;
       m.parameters = point;
-      m.id = member_id(m.scene, physics_version);
+      m.id = member_id(m.scene);
       m.slug = member_slug(cc.name, point);
       const std::uint64_t hash = std::stoull(m.id, nullptr, 16);
       if (auto it = seen.find(hash); it != seen.end()) {

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "solver/io/content_hash.hpp"
+#include "solver/scene/version.hpp"
 
 namespace capsule::study {
 
@@ -13,7 +14,17 @@ std::uint64_t fnv1a_64(std::string_view bytes) {
 }
 
 std::string member_hash_text(const nlohmann::json& canonical_scene, const std::string& physics_version) {
-  return canonical_scene.dump() + "\nphysics_version=" + physics_version;
+  // The canonical scene carries its version (so the solver runs it); the hash keeps the text of
+  // the scene without it and the version after it, as before the scene carried one.
+  if (!canonical_scene.is_object() || !canonical_scene.contains("physics_version"))
+    return canonical_scene.dump() + "\nphysics_version=" + physics_version;
+  nlohmann::json scene = canonical_scene;
+  scene.erase("physics_version");
+  return scene.dump() + "\nphysics_version=" + physics_version;
+}
+
+std::string member_id(const nlohmann::json& canonical_scene) {
+  return member_id(canonical_scene, canonical_scene.value("physics_version", std::string(capsule::physics_version)));
 }
 
 std::string member_id(const nlohmann::json& canonical_scene, const std::string& physics_version) {

@@ -93,7 +93,7 @@ TEST_CASE("the bad-input table: every refusal exits with its code and names the 
        {"FILE", "shape: expected a string, got 3", "(allowed: circle | biconcave)"}},
       {"wrong type (fractional integer)", "capsule", check, "s.json", scene_with([](json& j) { j["resolution"]["segments"] = 32.5; }), 2,
        {"FILE", "resolution.segments: expected an integer", "(allowed: integer in [16, 100000])"}},
-      {"unknown key", "capsule", check, "s.json", scene_with([](json& j) { j["Capillary"] = 0.1; }), 2, {"FILE", "Capillary: unknown key", "(allowed: dim, shape, law, C"}},
+      {"unknown key", "capsule", check, "s.json", scene_with([](json& j) { j["Capillary"] = 0.1; }), 2, {"FILE", "Capillary: unknown key", "(allowed: dim, physics_version, shape, law, C"}},
       {"unknown nested key", "capsule", check, "s.json", scene_with([](json& j) { j["protocol"]["shear"]["kt_max"] = 3; }), 2,
        {"FILE", "protocol.shear.kt_max: unknown key", "(allowed: until, kt, value"}},
       {"missing key", "capsule", check, "s.json", scene_with([](json& j) { j.erase("Ca"); }), 2, {"FILE", "Ca: missing required key", "(allowed: (0, 10])"}},

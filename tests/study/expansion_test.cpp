@@ -1,5 +1,7 @@
 // Campaign expansion: sweep counts, case overrides, and member ids (canonical hashing).
 #include <catch2/catch.hpp>
+
+#include "solver/scene/version.hpp"
 #include <set>
 
 #include "study/campaign/campaign.hpp"
@@ -115,6 +117,26 @@ TEST_CASE("the physics version is part of the id", "[study]") {
   const json scene = expand_text(testing::tiny_campaign("v", {0.1}, 1, 1)).at(0).scene;
   CHECK(member_id(scene, "1") != member_id(scene, "2"));
   CHECK(member_id(scene, "1") == member_id(json::parse(scene.dump()), "1"));
+  // The canonical scene names its version; the id hashes the scene without it, then the version.
+  CHECK(scene.at("physics_version") == capsule::physics_version);
+  CHECK(member_id(scene) == member_id(scene, capsule::physics_version));
+  json without = scene;
+  without.erase("physics_version");
+  CHECK(member_id(scene, "5") == member_id(without, "5"));
+}
+
+TEST_CASE("a campaign that names physics version 5 keeps version 5's canonical text and ids", "[study]") {
+  json doc = testing::tiny_campaign("v", {0.1}, 1, 1);
+  const Member today = expand_text(doc).at(0);
+  doc["base"]["physics_version"] = "5";
+  const Member old = expand_text(doc).at(0);
+  CHECK(old.id != today.id);
+  CHECK(old.scene.at("physics_version") == "5");
+  // The id version 5 gave: its canonical text (no physics_version key) and "5".
+  json text5 = old.scene;
+  text5.erase("physics_version");
+  CHECK(old.id == member_id(text5, "5"));
+  CHECK_FALSE(text5["resolution"].contains("collision"));  // left out at version 5's default
 }
 
 TEST_CASE("slugs are readable and safe as a path component", "[study]") {

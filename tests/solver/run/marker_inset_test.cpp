@@ -1,5 +1,6 @@
 // resolution.marker_inset places the 3D membrane's markers on the radius a - inset (the
-// reference shape with them), and 0 keeps them on a: the mean distance of the shape's vertices
+// reference shape with them), 0 keeps them on a, and the default rule "stresslet" puts them on
+// the radius solver/ib/hydrodynamic_radius.hpp computes: the mean distance of the shape's vertices
 // from their centroid after a few steps, against the radius asked for. The membrane has moved
 // by O(k dt) = 1e-3 a in those steps, so 0.01 lattice units separates an inset of 0.5 from none.
 #include <catch2/catch.hpp>
@@ -15,12 +16,12 @@ using namespace capsule;
 
 namespace {
 
-double mean_radius(double inset) {
+double mean_radius(const nlohmann::json& inset) {
   nlohmann::json j = nlohmann::json::parse(R"({"dim": 3, "shape": "sphere", "Ca": 0.05, "E_b": 0, "V": 1, "eta": 0,
     "resolution": {"a": 5, "mesh_level": 2},
     "protocol": {"shear": {"until": "time", "kt": 0.004}, "recover": {"until": "time", "kt": 0}},
     "output": {"interval_kt": 0.002, "shapes_at_kt": [0.002]}})");
-  j["resolution"]["marker_inset"] = inset;
+  if (!inset.is_null()) j["resolution"]["marker_inset"] = inset;
   const Scene scene = Scene::from_json(j, "marker_inset_test.json");
   const std::string path = (std::filesystem::temp_directory_path() / "marker_inset_test.h5").string();
   {
@@ -46,4 +47,7 @@ double mean_radius(double inset) {
 TEST_CASE("resolution.marker_inset puts the 3D markers on the radius a - inset", "[capsule3d]") {
   CHECK(std::abs(mean_radius(0.0) - 5.0) < 0.01);
   CHECK(std::abs(mean_radius(0.5) - 4.5) < 0.01);
+  // The 3D default is the stresslet's rule: 0.53 at a = 5 with the default kernel roma3.
+  CHECK(std::abs(mean_radius(nlohmann::json()) - (5.0 - 0.5263)) < 0.01);
+  CHECK(std::abs(mean_radius("stresslet") - (5.0 - 0.5263)) < 0.01);
 }

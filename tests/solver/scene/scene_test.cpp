@@ -28,13 +28,28 @@ TEST_CASE("a minimal scene gets the documented defaults", "[scene]") {
   j["shape"] = "biconcave";
   Scene t = Scene::from_json(j, "t.json");
   CHECK(t.law == "skalak");
-  CHECK(t.kernel == "peskin4");
-  j["resolution"] = {{"kernel", "roma3"}};
-  CHECK(Scene::from_json(j, "t.json").kernel == "roma3");
+  // Physics version 6: roma3 with the stresslet's inset, trt; version 5 kept peskin4 on a, mrt.
+  CHECK(t.kernel == "roma3");
+  CHECK(t.marker_inset_rule == "stresslet");
+  CHECK(t.marker_inset == Approx(0.4287).margin(1e-4));
+  CHECK(t.collision == "trt");
+  CHECK(t.power_law_model == "membrane");
+  CHECK(s.kelvin_voigt_step == "exact_mobility");
+  j["resolution"] = {{"kernel", "peskin4"}};
+  CHECK(Scene::from_json(j, "t.json").kernel == "peskin4");
+  CHECK(Scene::from_json(j, "t.json").marker_inset == Approx(0.5943).margin(1e-4));
+  json v5 = j;
+  v5["physics_version"] = "5";
+  v5["resolution"] = json::object();
+  const Scene old = Scene::from_json(v5, "t.json");
+  CHECK(old.kernel == "peskin4");
+  CHECK(old.marker_inset == 0.0);
+  CHECK(old.collision == "mrt");
+  CHECK(old.power_law_model == "fluid_shell");
   CHECK(t.grid() == std::vector<int>{100, 100, 80});
   CHECK(s.sls_viscosity == "physical");
   CHECK(s.E_b_2d == "dimensionless");
-  CHECK(s.to_json()["conventions"] == json{{"sls_viscosity", "physical"}, {"E_b_2d", "dimensionless"}});
+  CHECK(s.to_json()["conventions"] == json{{"sls_viscosity", "physical"}, {"E_b_2d", "dimensionless"}, {"biconcave_2d", "equivalent"}});
   json settled = minimal_2d();
   settled["protocol"]["recover"] = {{"until", "settled"}};
   CHECK(Scene::from_json(settled, "t.json").recover.window_fraction == 0.5);
@@ -42,10 +57,12 @@ TEST_CASE("a minimal scene gets the documented defaults", "[scene]") {
   j3["conventions"] = {{"E_b_2d", "dissertation"}};
   CHECK_THROWS_WITH(Scene::from_json(j3, "t.json"), Catch::Contains("conventions.E_b_2d: the 2D bending convention"));
   CHECK(t.precision == "single");  // 3D default (the precision comparison)
-  // biconcave_2d: not in the canonical text at its default (member ids made before it stay),
-  // written when set, refused where it means nothing.
+  // biconcave_2d: in version 5's canonical text only when set (member ids made before it
+  // stay), always from version 6; refused where it means nothing.
   CHECK(s.biconcave_2d == "equivalent");
-  CHECK(!s.to_json()["conventions"].contains("biconcave_2d"));
+  json s5 = minimal_2d();
+  s5["physics_version"] = 5;
+  CHECK(!Scene::from_json(s5, "t.json").to_json()["conventions"].contains("biconcave_2d"));
   json b = minimal_2d();
   b["shape"] = "biconcave";
   b["conventions"] = {{"biconcave_2d", "dissertation"}};
@@ -57,7 +74,7 @@ TEST_CASE("a minimal scene gets the documented defaults", "[scene]") {
                     Catch::Contains("conventions.biconcave_2d") && Catch::Contains("2D biconcave capsule only"));
 }
 
-TEST_CASE("resolution.precision: 2D double by default with only single in the canonical text; 3D single by default, always written", "[scene]") {
+TEST_CASE("resolution.precision: 2D double by default (version 5 wrote only single); 3D single by default, always written", "[scene]") {
   json j3 = minimal_2d();
   j3["dim"] = 3;
   j3["shape"] = "sphere";
@@ -72,10 +89,12 @@ TEST_CASE("resolution.precision: 2D double by default with only single in the ca
   CHECK(Scene::from_json(d3.to_json(), "t.json").precision == "double");
   CHECK(Scene::from_json(s3.to_json(), "t.json").precision == "single");
 
+  // Version 6 writes it always; version 5 left the 2D default out (its members' ids stay).
+  CHECK(Scene::from_json(minimal_2d(), "t.json").to_json()["resolution"]["precision"] == "double");
   json j = minimal_2d();
+  j["physics_version"] = "5";
   const Scene d = Scene::from_json(j, "t.json");
   CHECK(d.precision == "double");
-  // The default is left out of the canonical scene, so the ids of existing members stay.
   CHECK_FALSE(d.to_json()["resolution"].contains("precision"));
   j["resolution"] = {{"precision", "double"}};
   CHECK(Scene::from_json(j, "t.json").to_json() == d.to_json());
@@ -88,13 +107,15 @@ TEST_CASE("resolution.precision: 2D double by default with only single in the ca
   CHECK_THROWS_AS(Scene::from_json(j, "t.json"), SceneError);
 }
 
-TEST_CASE("resolution.membrane_update: euler by default and left out of the canonical text; 3D only", "[scene]") {
+TEST_CASE("resolution.membrane_update: euler by default (left out of version 5's canonical text); 3D only", "[scene]") {
   json j3 = minimal_2d();
   j3["dim"] = 3;
   j3["shape"] = "sphere";
+  CHECK(Scene::from_json(j3, "t.json").to_json()["resolution"]["membrane_update"] == "euler");
+  j3["physics_version"] = "5";
   const Scene e = Scene::from_json(j3, "t.json");
   CHECK(e.membrane_update == "euler");
-  // The default is not written, so the ids of members run before the key existed stay.
+  // Version 5 did not write the default, so the ids of members run before the key existed stay.
   CHECK_FALSE(e.to_json()["resolution"].contains("membrane_update"));
   j3["resolution"] = {{"membrane_update", "euler"}};
   CHECK(Scene::from_json(j3, "t.json").to_json() == e.to_json());
@@ -114,16 +135,38 @@ TEST_CASE("resolution.membrane_update: euler by default and left out of the cano
                     Catch::Contains("resolution.membrane_update: membrane update \"adams_bashforth2\" is 3D only"));
 }
 
-TEST_CASE("resolution.marker_inset: 0 by default and left out of the canonical text; 3D only, at most a/4", "[scene]") {
+TEST_CASE("resolution.marker_inset: the stresslet's rule by default in 3D (0 in version 5); a number; 3D only, at most a/4", "[scene]") {
   json j3 = minimal_2d();
   j3["dim"] = 3;
   j3["shape"] = "sphere";
+  // Version 6: the rule, written by its name; its value from a and the kernel.
+  const Scene r = Scene::from_json(j3, "t.json");
+  CHECK(r.marker_inset_rule == "stresslet");
+  CHECK(r.to_json()["resolution"]["marker_inset"] == "stresslet");
+  CHECK(Scene::from_json(r.to_json(), "t.json").marker_inset == r.marker_inset);  // runs as it says
+  j3["resolution"] = {{"a", 5.0}, {"marker_inset", "stresslet"}};
+  CHECK(Scene::from_json(j3, "t.json").marker_inset == Approx(0.5263).margin(1e-4));
+  // A kernel whose shell was not measured gets 0 by default and refuses the rule.
+  j3["resolution"] = {{"kernel", "linear2"}};
+  CHECK(Scene::from_json(j3, "t.json").marker_inset == 0.0);
+  CHECK(Scene::from_json(j3, "t.json").to_json()["resolution"]["marker_inset"] == 0.0);
+  j3["resolution"] = {{"kernel", "linear2"}, {"marker_inset", "stresslet"}};
+  CHECK_THROWS_WITH(Scene::from_json(j3, "t.json"),
+                    Catch::Contains("resolution.marker_inset") && Catch::Contains("peskin4 and roma3"));
+  // Below the smallest radius the rule has no solution: the scene says where it has one.
+  j3["resolution"] = {{"a", 2.0}};
+  CHECK_THROWS_WITH(Scene::from_json(j3, "t.json"), Catch::Contains("resolution.marker_inset") && Catch::Contains("a >= 2.15"));
+  j3["resolution"] = {{"marker_inset", "torque"}};
+  CHECK_THROWS_WITH(Scene::from_json(j3, "t.json"), Catch::Contains("resolution.marker_inset") && Catch::Contains("\"stresslet\" or a number"));
+  // Version 5: 0 by default, not written, so the ids of members run before the key existed stay.
+  j3["physics_version"] = "5";
+  j3["resolution"] = json::object();
   const Scene e = Scene::from_json(j3, "t.json");
   CHECK(e.marker_inset == 0.0);
-  // The default is not written, so the ids of members run before the key existed stay.
   CHECK_FALSE(e.to_json()["resolution"].contains("marker_inset"));
   j3["resolution"] = {{"marker_inset", 0.0}};
   CHECK(Scene::from_json(j3, "t.json").to_json() == e.to_json());
+  j3.erase("physics_version");
   j3["resolution"] = {{"a", 10.0}, {"marker_inset", 0.45}};
   const Scene s = Scene::from_json(j3, "t.json");
   CHECK(s.to_json()["resolution"]["marker_inset"] == 0.45);
@@ -133,14 +176,20 @@ TEST_CASE("resolution.marker_inset: 0 by default and left out of the canonical t
   j3["resolution"] = {{"marker_inset", -0.1}};
   CHECK_THROWS_WITH(Scene::from_json(j3, "t.json"), Catch::Contains("resolution.marker_inset"));
   json j2 = minimal_2d();
+  CHECK(Scene::from_json(j2, "t.json").marker_inset == 0.0);
   j2["resolution"] = {{"marker_inset", 0.5}};
+  CHECK_THROWS_WITH(Scene::from_json(j2, "t.json"), Catch::Contains("resolution.marker_inset: a marker inset is 3D only"));
+  j2["resolution"] = {{"marker_inset", "stresslet"}};
   CHECK_THROWS_WITH(Scene::from_json(j2, "t.json"), Catch::Contains("resolution.marker_inset: a marker inset is 3D only"));
 }
 
-TEST_CASE("resolution.kelvin_voigt_step: approximate_mobility by default and left out of the canonical text; 2D only",
+TEST_CASE("resolution.kelvin_voigt_step: exact_mobility by default (version 5: approximate_mobility, left out of its canonical text); 2D only",
           "[scene]") {
   json j = minimal_2d();
   j["eta"] = 200;
+  CHECK(Scene::from_json(j, "t.json").kelvin_voigt_step == "exact_mobility");
+  CHECK(Scene::from_json(j, "t.json").to_json()["resolution"]["kelvin_voigt_step"] == "exact_mobility");
+  j["physics_version"] = "5";
   const Scene d = Scene::from_json(j, "t.json");
   CHECK(d.kelvin_voigt_step == "approximate_mobility");
   // The default is not written, so the ids of members run before the key existed stay.
@@ -164,6 +213,8 @@ TEST_CASE("resolution.kelvin_voigt_step: approximate_mobility by default and lef
   json j3 = minimal_2d();
   j3["dim"] = 3;
   j3["shape"] = "sphere";
+  CHECK(Scene::from_json(j3, "t.json").kelvin_voigt_step == "approximate_mobility");
+  j3["physics_version"] = "5";
   j3["resolution"] = {{"kelvin_voigt_step", "approximate_mobility"}};
   CHECK_FALSE(Scene::from_json(j3, "t.json").to_json()["resolution"].contains("kelvin_voigt_step"));
   j3["resolution"] = {{"kelvin_voigt_step", "exact_mobility"}};
@@ -171,11 +222,14 @@ TEST_CASE("resolution.kelvin_voigt_step: approximate_mobility by default and lef
                     Catch::Contains("resolution.kelvin_voigt_step: Kelvin-Voigt step \"exact_mobility\" is the 2D membrane's"));
 }
 
-TEST_CASE("power_law.model: fluid_shell by default and left out of the canonical text; membrane replaces eta", "[scene]") {
+TEST_CASE("power_law.model: membrane by default (version 5: fluid_shell, left out of its canonical text); membrane replaces eta", "[scene]") {
   json j = minimal_2d();
   j["dim"] = 3;
   j["shape"] = "sphere";
   j["power_law"] = {{"K", 10}, {"n", 0.64}};
+  CHECK(Scene::from_json(j, "t.json").power_law_model == "membrane");
+  CHECK(Scene::from_json(j, "t.json").to_json()["power_law"]["model"] == "membrane");
+  j["physics_version"] = "5";
   const Scene d = Scene::from_json(j, "t.json");
   CHECK(d.power_law_model == "fluid_shell");
   // The default is not written, so the ids of members run before the key existed stay.
@@ -201,11 +255,14 @@ TEST_CASE("power_law.model: fluid_shell by default and left out of the canonical
   CHECK_THROWS_WITH(Scene::from_json(j, "t.json"), Catch::Contains("power_law.model: unknown value \"shell\""));
 }
 
-TEST_CASE("resolution.collision: mrt by default and left out of the canonical text; trt 3D only", "[scene]") {
+TEST_CASE("resolution.collision: trt by default in 3D (version 5: mrt, left out of its canonical text); trt 3D only", "[scene]") {
   json j3 = minimal_2d();
   j3["dim"] = 3;
   j3["shape"] = "sphere";
   j3["V"] = 5;
+  CHECK(Scene::from_json(j3, "t.json").collision == "trt");
+  CHECK(Scene::from_json(minimal_2d(), "t.json").collision == "mrt");
+  j3["physics_version"] = "5";
   const Scene d = Scene::from_json(j3, "t.json");
   CHECK(d.collision == "mrt");
   // The default is not written, so the ids of members run before the key existed stay.
@@ -225,6 +282,7 @@ TEST_CASE("resolution.collision: mrt by default and left out of the canonical te
                     Catch::Contains("resolution.collision: unknown value \"bgk\"") && Catch::Contains("mrt | trt"));
   json j2 = minimal_2d();
   j2["resolution"] = {{"collision", "trt"}};
+  j2["physics_version"] = "5";
   CHECK_THROWS_WITH(Scene::from_json(j2, "t.json"), Catch::Contains("resolution.collision: the 2D rates (9)"));
 }
 
@@ -268,6 +326,8 @@ TEST_CASE("bad scenes are refused with the file, the key and the allowed range",
        "conventions.sls_viscosity: the standard linear solid is the 3D membrane's (allowed: \"physical\" in 2D)"},
       {"unknown convention", [](json& j) { j["conventions"] = {{"E_b_2d", "text"}}; },
        "conventions.E_b_2d: unknown value \"text\" (allowed: dimensionless | dissertation)"},
+      {"unknown physics version", [](json& j) { j["physics_version"] = "4"; },
+       "physics_version: physics version \"4\" is not one this solver runs"},
       {"window_fraction on a timed recovery", [](json& j) { j["protocol"]["recover"]["window_fraction"] = 0.5; },
        "protocol.recover.window_fraction: value 0.5 out of range (allowed: [0, 0])"},
   };
@@ -298,6 +358,7 @@ TEST_CASE("3D relaxation-time rule: tau = 1.5 where stable, lowered by the coupl
     j["Ca"] = Ca;
     j["E_b"] = E_b;
     j["resolution"] = {{"a", a}};
+    if (a < 2.2) j["resolution"]["marker_inset"] = 0.0;  // the stresslet's inset needs a >= 2.15
     return Scene::from_json(j, "t.json");
   };
   // The default 3D member (a = 10, Re = 0.05, Ca = 0.05, E_b = 0.025): at most 6000 steps per kt.
