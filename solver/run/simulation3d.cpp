@@ -11,7 +11,8 @@
 // at -+ k H/2 shear_factor(kt).
 //
 // Conventions (solver/membrane3d/README.md "Conventions"):
-//  - E_B = E_b a^2 E_s. (35) prints E_B/(a E_s), which has the dimension of a length; the text
+//  - E_B = E_b a^2 E_s (a the markers' radius a - inset, see build_membrane). (35) prints
+//    E_B/(a E_s), which has the dimension of a length; the text
 //    works with a = 1, where both agree, and this form keeps the physics independent of the
 //    resolution a (the same choice as the 2D driver). c0 is given in units of 1/a.
 //  - Volume penalty (84): K_v = volume_penalty E_s / a (a pressure).
@@ -390,7 +391,11 @@ class Simulation3D {
       tau_m_ = mu_s_at_k / E_m;
       p.maxwell = m3::MaxwellElement{E_m, tau_m_, 1.0, m3::PowerLawRelaxation{true, s.power_law_n, units_.shear_rate}};
     }
-    E_B_ = s.E_b * a * a * units_.E_s;
+    // E_b is the bending number of the sphere the membrane is: with the markers on r_m = a -
+    // inset, E_B = E_b r_m^2 E_s, so bending stands to the shear elasticity (E_B / (E_s r_m^2))
+    // as on a membrane of radius a (the flow's radius sets Ca; the elastic response needs no such
+    // factor: its strain does not carry a length, docs/findings/immersed_boundary_error_budget.md).
+    E_B_ = s.E_b * r_m * r_m * units_.E_s;
     p.E_B = E_B_;
     if (s.reference_case == "B") {
       // c0 = 2 kappa of the start shape, node by node (Table 1, case B).
@@ -537,7 +542,7 @@ std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, const Ru
   out.set_attribute("shear_modulus", sim.shear_modulus());
   out.set_attribute("shear_modulus_convention", std::string("neo-hookean: G_s = E_s/3 (Ramanujan-Pozrikidis E_s); skalak: G_s = E_s"));
   out.set_attribute("E_B", sim.E_B());
-  out.set_attribute("E_B_convention", std::string("E_B = E_b a^2 E_s; W_b = (E_B/2) int (2 kappa - c0)^2 dS"));
+  out.set_attribute("E_B_convention", std::string("E_B = E_b r_m^2 E_s, r_m = a - marker_inset (the membrane's radius); W_b = (E_B/2) int (2 kappa - c0)^2 dS"));
   out.set_attribute("K_v", sim.K_v());
   out.set_attribute("mesh_level", static_cast<long>(scene.mesh_level));
   out.set_attribute("vertices", static_cast<long>(mesh.vertex_count()));
