@@ -65,15 +65,6 @@ using Clock = std::chrono::steady_clock;
 static_assert(sizeof(m3::Vec3) == 3 * sizeof(double), "membrane positions are used as a flat n x 3 array");
 
 
-// The membrane's small-deformation shear modulus G_s from the E_s of Ca (34).
-// Neo-Hookean: E_s is the "surface modulus of elasticity" of Ramanujan and Pozrikidis (1998),
-// whose law is tau_1 = E_s/(3 l1 l2)(l1^2 - 1/(l1 l2)^2), so G_s = E_s/3 -- the same as the
-// text's own SLS (63), g_0 = E_s/3 -- and the text validates against their D(Ca) at equal Ca
-// (Fig. 7). (56) and (58)-(59) as printed have G_s = E_s; with that reading a sphere at
-// Ca = 0.05 deforms to D = 0.12 at a = 5 where Ramanujan and Pozrikidis have 0.26 (solver/membrane3d/README.md
-// "Conventions", measured). Skalak: (60)-(61) as printed, G_s = E_s (Skalak et al., Yazdani and
-// Bagchi).
-double shear_modulus_3d(const Scene& s, const Units& u) { return m3::law_modulus(m3::elastic_law_from_name(s.law), u.E_s); }
 
 struct Timings {
   // Wall seconds: the fluid step; spreading, interpolation and the position update; the

@@ -1,7 +1,10 @@
 #include "solver/scene/units.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
+
+#include "solver/membrane3d/constitutive_law.hpp"
 
 namespace capsule {
 
@@ -44,21 +47,58 @@ double choose_tau_2d(const Scene& scene) {
 //    tau = 1 (docs/guide/model.md "Relaxation time"); V = 2: +2.0 % at 1.5. The cause is the D3Q19 odd
 //    moments' rates (their Lambda grows with the inside viscosity); resolution.collision = "trt"
 //    removes it (docs/findings/accuracy_and_stability.md "Viscosity contrast and the relaxation
-//    time"), but this rule still keeps tau = 1 for V > 1 so that members' numbers do not move.
+//    time"): with trt, D_stop moves by at most 0.01 % and k tau_s by 0.34 % over tau 0.7-1.5 at
+//    V = 5 and 10, so a trt scene (the physics version 6 default) takes tau = 1.5 at any V; an
+//    mrt scene (version 5) keeps tau = 1 for V > 1 so that its members' numbers do not move.
 //  - stability: tau = 3 ran for Ca = 0.05 and 0.2 (S = Re nu/(a Ca) = 0.17 and 0.04); the
 //    largest bending number B = E_b a Re nu/Ca seen stable is 0.17 (a = 10, tau = 1, E_b = 0.1,
 //    Ca = 0.05). The 2D bounds (S 0.04, B 0.12) do not carry over: 3D ran stably at 4 x S.
+//  - the Maxwell element (eta > 0, or the power law in the membrane): its stiffness E_m = G G_s
+//    acts at once (tau_m is 10-60 steps), 50 times the elastic one at G = 50, and with Roma's
+//    kernel (the version 6 default, whose self-mobility is 2.4 times Peskin's) the explicit
+//    coupling blows up when M = maxwell_stiffness_number is large, the sooner the finer the
+//    membrane mesh. eta = 10, G = 50 (the dissertation's reading), Ca 0.05: level 3 blew up at
+//    M = 1.32 and 1.07 (a = 4 and 5, tau 1.5) and ran at 0.8 to steady; a = 5, level 4 blew up
+//    at 0.7 (kt 4.4), level 5 at 0.6 and 0.5 (kt 5.7 and 10.6) and ran to kt 20 at 0.4
+//    (docs/guide/model.md "Relaxation time"). M_max = 0.4.
 //  The tau = 2 blow-up the first 3D driver saw (a = 5, Ca = 0.1, NaN at kt = 0.7) was measured
 //  in the session of the energy-square rate fix (physics version 2), which removed an
 //  instability at rest above tau ~ 1.5 in D3Q19; today tau = 2 runs that scene to kt 3.
 double choose_tau_3d(const Scene& scene) {
-  constexpr double nu_accurate = 1.0 / 3.0, nu_contrast = 1.0 / 6.0, S_max = 0.17, B_max = 0.17, tau_min = 0.52;
-  double nu = scene.V > 1.0 ? nu_contrast : nu_accurate;
+  constexpr double nu_accurate = 1.0 / 3.0, nu_contrast = 1.0 / 6.0, S_max = 0.17, B_max = 0.17, M_max = 0.4, tau_min = 0.52;
+  double nu = (scene.V > 1.0 && scene.collision != "trt") ? nu_contrast : nu_accurate;
   nu = std::min(nu, S_max * scene.a * scene.Ca / scene.Re);
   if (scene.E_b > 0) nu = std::min(nu, B_max * scene.Ca / (scene.E_b * scene.a * scene.Re));
+  // The Maxwell element's stiffness number M grows with nu (E_m ~ nu^2): lowered by bisection
+  // until M <= M_max. Where even tau_min exceeds it (the Kelvin-Voigt limit, M -> eta a: no tau
+  // helps), tau_min.
+  const auto M = [&](double n) { return maxwell_stiffness_number(scene, 0.5 + 3.0 * n); };
+  const double nu_min = (tau_min - 0.5) / 3.0;
+  if (nu > nu_min && M(nu) > M_max) {
+    double lo = nu_min, hi = nu;
+    if (M(lo) > M_max) return tau_min;
+    for (int i = 0; i < 60; ++i) (M(0.5 * (lo + hi)) > M_max ? hi : lo) = 0.5 * (lo + hi);
+    nu = lo;
+  }
   return std::max(tau_min, 0.5 + 3.0 * nu);
 }
 }  // namespace
+
+double shear_modulus_3d(const Scene& s, const Units& u) {
+  return membrane3d::law_modulus(membrane3d::elastic_law_from_name(s.law), u.E_s);
+}
+
+double maxwell_stiffness_number(const Scene& s, double tau) {
+  const bool power_law_membrane = s.power_law_K > 0 && s.power_law_model == "membrane";
+  if (s.dim != 3 || !(s.eta > 0 || power_law_membrane)) return 0.0;
+  const Units u = units_for(s, tau);
+  const double E_m = s.G * shear_modulus_3d(s, u);
+  if (power_law_membrane) return E_m / u.nu;
+  // The same tau_m as the solver (solver/run/simulation3d.cpp): mu_s / E_m, a third of it in the
+  // dissertation's reading of (63).
+  const double tau_m = (s.sls_viscosity == "dissertation" ? u.mu_s / 3.0 : u.mu_s) / E_m;
+  return E_m * tau_m * (1.0 - std::exp(-1.0 / tau_m)) / u.nu;
+}
 
 double dimensionless_E_b(const Scene& s) {
   // The text's 2D reading (Scene::E_b_2d): E_B = E_b a_text E_s with a_text = 0.5 in its units

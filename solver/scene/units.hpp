@@ -22,6 +22,24 @@ double dimensionless_E_b(const Scene& scene);
 // tau must be > 1/2; throws std::invalid_argument otherwise.
 Units units_for(const Scene& scene, double tau);
 
+// The membrane's small-deformation shear modulus G_s from the E_s of Ca (34).
+// Neo-Hookean: E_s is the "surface modulus of elasticity" of Ramanujan and Pozrikidis (1998),
+// whose law is tau_1 = E_s/(3 l1 l2)(l1^2 - 1/(l1 l2)^2), so G_s = E_s/3 -- the same as the
+// text's own SLS (63), g_0 = E_s/3 -- and the text validates against their D(Ca) at equal Ca
+// (Fig. 7). (56) and (58)-(59) as printed have G_s = E_s; with that reading a sphere at
+// Ca = 0.05 deforms to D = 0.12 at a = 5 where Ramanujan and Pozrikidis have 0.26 (solver/membrane3d/README.md
+// "Conventions", measured). Skalak: (60)-(61) as printed, G_s = E_s (Skalak et al., Yazdani and
+// Bagchi).
+double shear_modulus_3d(const Scene& scene, const Units& units);
+
+// The stiffness of a 3D membrane's Maxwell element (the standard linear solid (63)-(67), eta > 0,
+// or the power law in the membrane) that the fluid feels over one time step, over the fluid's
+// viscosity: E_m (1 - exp(-1/tau_m)) tau_m / nu, E_m = G G_s and tau_m its relaxation time in
+// steps (the power law: E_m / nu, its relaxation time grows where the membrane shears slowly).
+// The explicit coupling blows up when it is large (docs/guide/model.md "Relaxation time");
+// 0 without a Maxwell element.
+double maxwell_stiffness_number(const Scene& scene, double tau);
+
 // The relaxation time the solver runs a scene with: the scene's tau, or when it is 0 the
 // rule of docs/guide/model.md "Relaxation time" (stability of the explicit membrane coupling).
 double choose_tau(const Scene& scene);

@@ -20,6 +20,7 @@
 #include "solver/io/member_file.hpp"
 #include "solver/run/simulation3d.hpp"
 #include "solver/scene/scene.hpp"
+#include "solver/scene/units.hpp"
 
 using namespace capsule;
 
@@ -273,7 +274,7 @@ TEST_CASE("a more viscous interior (V = 5) slows the response of a sphere", "[ca
 TEST_CASE("the automatic tau runs the default member through steady shear and recovery, and V = 5, eta = 10", "[capsule3d]") {
   // CI-sized (a = 4, level 2) versions of the reference member (Ca = 0.05, E_b = 0.025, shear
   // until steady, recover until settled) and of a V = 5 and an eta = 10 member, at the solver's
-  // own tau: 1.5 for V <= 1, 1 for V > 1 (docs/guide/model.md "Relaxation time").
+  // own tau: 1.5 at any V with the trt rates (docs/guide/model.md "Relaxation time").
   std::ostringstream ref;
   ref << R"({"dim": 3, "shape": "sphere", "Ca": 0.05, "E_b": 0.025, "V": 1, "eta": 0,
       "resolution": {"a": 4, "mesh_level": 2},
@@ -288,10 +289,14 @@ TEST_CASE("the automatic tau runs the default member through steady shear and re
   CHECK(std::abs(d.series.at("volume_drift").back()) < 0.01);
   const io::MemberData v5 = run(sphere_scene(0.05, 4.0, 2, 1.0, 0.0, 0.05, 5.0), "auto_tau_v5");
   REQUIRE(v5.status == "complete");
-  CHECK(v5.attributes.at("tau").get<double>() == Approx(1.0));
+  CHECK(v5.attributes.at("tau").get<double>() == Approx(1.5));
   const io::MemberData eta = run(sphere_scene(0.05, 4.0, 2, 1.0, 10.0), "auto_tau_eta");
   REQUIRE(eta.status == "complete");
-  CHECK(eta.attributes.at("tau").get<double>() == Approx(1.5));
+  // Its Maxwell element (G = 50) is stiff enough at a = 4 to lower tau to the bound M = 0.4.
+  const double tau_eta = eta.attributes.at("tau").get<double>();
+  CHECK(tau_eta < 1.5);
+  CHECK(capsule::maxwell_stiffness_number(Scene::from_json(nlohmann::json::parse(sphere_scene(0.05, 4.0, 2, 1.0, 10.0)), "t.json"),
+                                          tau_eta) == Approx(0.4).epsilon(1e-6));
 }
 
 TEST_CASE("validation: neo-Hookean sphere steady D_xy against Ramanujan-Pozrikidis at a = 10 and level 4", "[.validation][capsule3d]") {

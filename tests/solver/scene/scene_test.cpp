@@ -1,5 +1,6 @@
 // Scenes: defaults, canonical form, and every refusal naming the key and the allowed range.
 #include <catch2/catch.hpp>
+#include <cmath>
 
 #include "solver/scene/scene.hpp"
 #include "solver/scene/units.hpp"
@@ -373,10 +374,17 @@ TEST_CASE("3D relaxation-time rule: tau = 1.5 where stable, lowered by the coupl
   const Scene soft = sphere(0.005, 0.0, 10);
   const double nu_soft = (capsule::choose_tau(soft) - 0.5) / 3.0;
   CHECK(soft.Re * nu_soft / (soft.a * soft.Ca) == Approx(0.17));
-  // A more viscous interior keeps tau = 1 (its error depends on the inside relaxation time).
+  // A more viscous interior: with the trt rates (version 6) its D does not depend on tau, so it
+  // takes tau = 1.5 as well; with the mrt rates (version 5) the error depends on the inside
+  // relaxation time and tau stays 1.
   json v5 = ref.to_json();
   v5["V"] = 5.0;
+  CHECK(capsule::choose_tau(Scene::from_json(v5, "t.json")) == Approx(1.5));
+  v5["resolution"]["collision"] = "mrt";
   CHECK(capsule::choose_tau(Scene::from_json(v5, "t.json")) == Approx(1.0));
+  json v5_version5 = json::parse(R"({"dim": 3, "shape": "sphere", "Ca": 0.05, "E_b": 0.025, "V": 5, "eta": 0, "physics_version": "5",
+      "protocol": {"shear": {"until": "steady"}, "recover": {"until": "settled"}}})");
+  CHECK(capsule::choose_tau(Scene::from_json(v5_version5, "t.json")) == Approx(1.0));
   json v02 = ref.to_json();
   v02["V"] = 0.2;
   CHECK(capsule::choose_tau(Scene::from_json(v02, "t.json")) == Approx(1.5));
@@ -385,6 +393,53 @@ TEST_CASE("3D relaxation-time rule: tau = 1.5 where stable, lowered by the coupl
   json j = ref.to_json();
   j["resolution"]["tau"] = 1.0;
   CHECK(capsule::choose_tau(Scene::from_json(j, "t.json")) == 1.0);
+}
+
+TEST_CASE("3D relaxation-time rule: the Maxwell element's stiffness lowers tau", "[scene]") {
+  // eta = 10, G = 50, the dissertation's reading of (63), Ca = 0.05, Re = 0.05: the bench's
+  // eta10 member, which blew up at a = 4 and 5 with tau = 1.5 (docs/guide/model.md "Relaxation time").
+  auto viscous = [](double a) {
+    json j = json::parse(R"({"dim": 3, "shape": "sphere", "Ca": 0.05, "E_b": 0, "V": 1, "eta": 10, "G": 50,
+      "conventions": {"sls_viscosity": "dissertation"},
+      "protocol": {"shear": {"until": "steady"}, "recover": {"until": "settled"}}})");
+    j["resolution"] = {{"a", a}};
+    return Scene::from_json(j, "t.json");
+  };
+  // By hand at a = 5, tau = 1.5: nu = 1/3, E_s = Re nu^2 / (a Ca) = 1/45, G_s = E_s / 3,
+  // E_m = 50 G_s = 0.37037, tau_m = (eta a nu / 3) / E_m = 15 steps,
+  // M = E_m tau_m (1 - exp(-1/15)) / nu = 1.0749.
+  CHECK(capsule::maxwell_stiffness_number(viscous(5), 1.5) == Approx(1.0749).epsilon(1e-4));
+  CHECK(capsule::maxwell_stiffness_number(viscous(5), 1.5) ==
+        Approx(0.37037037 * 15.0 * (1.0 - std::exp(-1.0 / 15.0)) * 3.0).epsilon(1e-6));
+  // Lowered to M = 0.4 at every a (M at tau 1.5: 1.32 / 1.07 / 0.78 / 0.55 at a = 4 / 5 / 7 / 10);
+  // the larger a, the closer to 1.5 (E_m / nu falls as 1 / a).
+  double previous = 0.5;
+  for (double a : {4.0, 5.0, 7.0, 10.0}) {
+    const double tau = capsule::choose_tau(viscous(a));
+    INFO("a = " << a << ": tau " << tau);
+    CHECK(tau < 1.5);
+    CHECK(tau > previous);
+    CHECK(capsule::maxwell_stiffness_number(viscous(a), tau) == Approx(0.4).epsilon(1e-6));
+    previous = tau;
+  }
+  CHECK(capsule::choose_tau(viscous(5)) == Approx(0.8644).epsilon(1e-3));  // the root of the hand formula, solved apart
+  // A weak Maxwell element needs nothing: G = 2 at a = 10 has M(1.5) = 0.022.
+  json weak = viscous(10).to_json();
+  weak["G"] = 2.0;
+  CHECK(capsule::maxwell_stiffness_number(Scene::from_json(weak, "t.json"), 1.5) < 0.4);
+  CHECK(capsule::choose_tau(Scene::from_json(weak, "t.json")) == Approx(1.5));
+  // No Maxwell element, no bound: the elastic sphere at a = 5 keeps 1.5.
+  json elastic = viscous(5).to_json();
+  elastic["eta"] = 0.0;
+  CHECK(capsule::maxwell_stiffness_number(Scene::from_json(elastic, "t.json"), 1.5) == 0.0);
+  CHECK(capsule::choose_tau(Scene::from_json(elastic, "t.json")) == Approx(1.5));
+  // The power law in the membrane: its relaxation time grows where the membrane shears slowly,
+  // so M = E_m / nu (K = 100 at Ca 0.05, a = 5: 50 G_s / nu = 1.111 at tau 1.5).
+  json power = elastic;
+  power["power_law"] = {{"K", 100.0}, {"n", 0.64}, {"model", "membrane"}};
+  const Scene pl = Scene::from_json(power, "t.json");
+  CHECK(capsule::maxwell_stiffness_number(pl, 1.5) == Approx(50.0 / 135.0 * 3.0).epsilon(1e-9));
+  CHECK(capsule::maxwell_stiffness_number(pl, capsule::choose_tau(pl)) == Approx(0.4).epsilon(1e-6));
 }
 
 TEST_CASE("a 2D scene's canonical form does not depend on keys the 2D model ignores", "[scene]") {
