@@ -477,6 +477,8 @@ MemberStatus read_member_status(const std::string& path) {
   if (a.contains("wall_seconds") && a["wall_seconds"].is_number()) s.wall_seconds = a["wall_seconds"].get<double>();
   if (a.contains("steps") && a["steps"].is_number()) s.steps = a["steps"].get<double>();
   if (a.contains("threads") && a["threads"].is_number()) s.threads = a["threads"].get<long>();
+  if (a.contains("code_version") && a["code_version"].is_string()) s.code_version = a["code_version"];
+  if (a.contains("physics_version") && a["physics_version"].is_string()) s.physics_version = a["physics_version"];
   return s;
 }
 

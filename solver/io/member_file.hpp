@@ -102,6 +102,8 @@ struct MemberStatus {
   double wall_seconds = std::numeric_limits<double>::quiet_NaN();
   double steps = std::numeric_limits<double>::quiet_NaN();
   long threads = 0;
+  // Provenance: the build that wrote it (a `-dirty` one is not reproducible) and its physics.
+  std::string code_version, physics_version;
 };
 MemberStatus read_member_status(const std::string& path);
 
