@@ -362,25 +362,21 @@ class Simulation3D {
     update_ = ib::membrane_update_from_name(s.membrane_update);
     shear_modulus_ = shear_modulus_3d(s, units_);
     p.law = m3::Constitutive{m3::elastic_law_from_name(s.law), shear_modulus_, s.C};
-    if (s.eta > 0) {
-      // SLS (63)-(67): E_m = G E_s, tau_m = mu_s / E_m (docs/conventions.md "Membrane viscosity in 3D"), mu_s = eta a mu_a (36).
-      if (!(s.G > 0)) throw std::invalid_argument("eta > 0 needs G = E_m/E_s > 0");
-      const double E_m = s.G * shear_modulus_;  // G = E_m / E_s, in the same convention
-      // The Kelvin-Voigt limit has surface viscosity E_m tau_m = mu_s ("physical"). The text's
-      // (63) read literally has a Maxwell modulus g_1(0)/2 = E_m/3 and tau_m = mu_s / E_m with
-      // E_m = G E_s = 3 G (E_s/3): its limit is mu_s/3 ("dissertation", Scene::sls_viscosity).
-      const double mu_limit = s.sls_viscosity == "dissertation" ? units_.mu_s / 3.0 : units_.mu_s;
-      p.maxwell = m3::MaxwellElement{E_m, mu_limit / E_m, 1.0};
-      tau_m_ = mu_limit / E_m;
-    }
-    if (s.power_law_K > 0 && s.power_law_model == "membrane") {
-      // The power law in the membrane (scene power_law.model): the SLS's Maxwell element with the
-      // surface viscosity (102) mu_s(gamma) = K a mu_a (gamma / k)^(n - 1) per triangle, so its
-      // Kelvin-Voigt limit is the power-law membrane and n = 1 is eta = K (physical reading).
-      const double E_m = s.G * shear_modulus_;
-      const double mu_s_at_k = s.power_law_K * a * units_.nu;  // rho = 1: mu_a = nu
-      tau_m_ = mu_s_at_k / E_m;
-      p.maxwell = m3::MaxwellElement{E_m, tau_m_, 1.0, m3::PowerLawRelaxation{true, s.power_law_n, units_.shear_rate}};
+    // The Maxwell element (solver/scene/units.hpp): the SLS (63)-(67), E_m = G E_s, tau_m = mu_s /
+    // E_m (docs/conventions.md "Membrane viscosity in 3D"), mu_s = eta a mu_a (36); or the power law
+    // in the membrane (scene power_law.model): the same element with the surface viscosity (102)
+    // mu_s(gamma) = K a mu_a (gamma / k)^(n - 1) per triangle, so its Kelvin-Voigt limit is the
+    // power-law membrane and n = 1 is eta = K (physical reading). The Kelvin-Voigt limit of the
+    // SLS has surface viscosity E_m tau_m = mu_s ("physical"); the text's (63) read literally has a
+    // Maxwell modulus g_1(0)/2 = E_m/3 and tau_m = mu_s / E_m with E_m = G E_s = 3 G (E_s/3): its
+    // limit is mu_s/3 ("dissertation", Scene::sls_viscosity).
+    if (s.eta > 0 && !(s.G > 0)) throw std::invalid_argument("eta > 0 needs G = E_m/E_s > 0");
+    const MaxwellElement3d maxwell = maxwell_element_3d(s, units_);
+    if (maxwell.present) {
+      tau_m_ = maxwell.tau_m;
+      p.maxwell = maxwell.power_law
+                      ? m3::MaxwellElement{maxwell.E_m, tau_m_, 1.0, m3::PowerLawRelaxation{true, s.power_law_n, units_.shear_rate}}
+                      : m3::MaxwellElement{maxwell.E_m, tau_m_, 1.0};
     }
     // E_b is the bending number of the sphere the membrane is: with the markers on r_m = a -
     // inset, E_B = E_b r_m^2 E_s, so bending stands to the shear elasticity (E_B / (E_s r_m^2))

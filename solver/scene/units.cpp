@@ -88,16 +88,26 @@ double shear_modulus_3d(const Scene& s, const Units& u) {
   return membrane3d::law_modulus(membrane3d::elastic_law_from_name(s.law), u.E_s);
 }
 
-double maxwell_stiffness_number(const Scene& s, double tau) {
+MaxwellElement3d maxwell_element_3d(const Scene& s, const Units& u) {
+  MaxwellElement3d m;
   const bool power_law_membrane = s.power_law_K > 0 && s.power_law_model == "membrane";
-  if (s.dim != 3 || !(s.eta > 0 || power_law_membrane)) return 0.0;
-  const Units u = units_for(s, tau);
-  const double E_m = s.G * shear_modulus_3d(s, u);
-  if (power_law_membrane) return E_m / u.nu;
-  // The same tau_m as the solver (solver/run/simulation3d.cpp): mu_s / E_m, a third of it in the
-  // dissertation's reading of (63).
-  const double tau_m = (s.sls_viscosity == "dissertation" ? u.mu_s / 3.0 : u.mu_s) / E_m;
-  return E_m * tau_m * (1.0 - std::exp(-1.0 / tau_m)) / u.nu;
+  if (s.dim != 3 || !(s.eta > 0 || power_law_membrane)) return m;
+  m.present = true;
+  m.power_law = power_law_membrane;
+  m.E_m = s.G * shear_modulus_3d(s, u);
+  // rho = 1, so mu_a = nu; u.mu_s = eta a mu_a (36).
+  const double mu = power_law_membrane ? s.power_law_K * s.a * u.nu
+                                       : (s.sls_viscosity == "dissertation" ? u.mu_s / 3.0 : u.mu_s);
+  m.tau_m = mu / m.E_m;
+  return m;
+}
+
+double maxwell_stiffness_number(const Scene& s, double tau) {
+  const MaxwellElement3d m = maxwell_element_3d(s, units_for(s, tau));
+  if (!m.present) return 0.0;
+  const double nu = (tau - 0.5) / 3.0;
+  if (m.power_law) return m.E_m / nu;
+  return m.E_m * m.tau_m * (1.0 - std::exp(-1.0 / m.tau_m)) / nu;
 }
 
 double dimensionless_E_b(const Scene& s) {

@@ -32,6 +32,20 @@ Units units_for(const Scene& scene, double tau);
 // Bagchi).
 double shear_modulus_3d(const Scene& scene, const Units& units);
 
+// The Maxwell element of a 3D membrane in lattice units: the standard linear solid (63)-(67)
+// when eta > 0, or the power law in the membrane (power_law.model "membrane"; the scene refuses
+// both at once). E_m = G G_s; tau_m = mu / E_m in steps, mu the element's surface viscosity: the
+// Kelvin-Voigt limit mu_s (a third of it in the dissertation's reading of (63),
+// docs/conventions.md "Membrane viscosity in 3D"), or the power law's (102) at gamma = k,
+// K a mu_a. present is false (and both 0) without one.
+struct MaxwellElement3d {
+  bool present = false;
+  bool power_law = false;
+  double E_m = 0;
+  double tau_m = 0;
+};
+MaxwellElement3d maxwell_element_3d(const Scene& scene, const Units& units);
+
 // The stiffness of a 3D membrane's Maxwell element (the standard linear solid (63)-(67), eta > 0,
 // or the power law in the membrane) that the fluid feels over one time step, over the fluid's
 // viscosity: E_m (1 - exp(-1/tau_m)) tau_m / nu, E_m = G G_s and tau_m its relaxation time in

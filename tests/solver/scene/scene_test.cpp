@@ -440,6 +440,42 @@ TEST_CASE("3D relaxation-time rule: the Maxwell element's stiffness lowers tau",
   const Scene pl = Scene::from_json(power, "t.json");
   CHECK(capsule::maxwell_stiffness_number(pl, 1.5) == Approx(50.0 / 135.0 * 3.0).epsilon(1e-9));
   CHECK(capsule::maxwell_stiffness_number(pl, capsule::choose_tau(pl)) == Approx(0.4).epsilon(1e-6));
+  // Where no tau reaches M_max the rule falls back to its floor 0.52: a Maxwell element of G =
+  // 1e4 (the scene's largest) at eta = 10, physical reading, a = 5. At tau 0.52 (nu = 1/150):
+  // E_s = Re nu^2 / (a Ca) = 8.889e-6, E_m = 1e4 E_s / 3 = 0.02963, tau_m = eta a nu / E_m =
+  // 11.25 steps, M = E_m tau_m (1 - exp(-1/11.25)) / nu = 4.25 > 0.4.
+  json stiff = viscous(5).to_json();
+  stiff["G"] = 1e4;
+  stiff["conventions"]["sls_viscosity"] = "physical";
+  const Scene floor_scene = Scene::from_json(stiff, "t.json");
+  CHECK(capsule::maxwell_stiffness_number(floor_scene, 0.52) == Approx(4.25).epsilon(2e-3));
+  CHECK(capsule::choose_tau(floor_scene) == 0.52);
+}
+
+TEST_CASE("3D Maxwell element in lattice units: modulus and relaxation time", "[scene]") {
+  json j = json::parse(R"({"dim": 3, "shape": "sphere", "Ca": 0.05, "E_b": 0, "V": 1, "eta": 10, "G": 50,
+    "resolution": {"a": 5}, "conventions": {"sls_viscosity": "dissertation"},
+    "protocol": {"shear": {"until": "steady"}, "recover": {"until": "settled"}}})");
+  // By hand at tau 1.5 (as above): E_m = 50 E_s / 3 = 0.37037, tau_m = (eta a nu / 3) / E_m = 15.
+  const capsule::Units u = capsule::units_for(Scene::from_json(j, "t.json"), 1.5);
+  const auto sls = capsule::maxwell_element_3d(Scene::from_json(j, "t.json"), u);
+  CHECK(sls.present);
+  CHECK_FALSE(sls.power_law);
+  CHECK(sls.E_m == Approx(50.0 / 135.0).epsilon(1e-12));
+  CHECK(sls.tau_m == Approx(15.0).epsilon(1e-12));
+  // The physical reading: three times the surface viscosity, three times tau_m.
+  j["conventions"]["sls_viscosity"] = "physical";
+  CHECK(capsule::maxwell_element_3d(Scene::from_json(j, "t.json"), u).tau_m == Approx(45.0).epsilon(1e-12));
+  // The power law in the membrane (which the scene allows only with eta = 0): tau_m = K a nu /
+  // E_m at gamma = k (K = 100: 100 * 5 / 3 / 0.37037 = 450).
+  j["eta"] = 0.0;
+  j["power_law"] = {{"K", 100.0}, {"n", 0.64}, {"model", "membrane"}};
+  const auto pl = capsule::maxwell_element_3d(Scene::from_json(j, "t.json"), u);
+  CHECK(pl.power_law);
+  CHECK(pl.tau_m == Approx(450.0).epsilon(1e-12));
+  // No Maxwell element: absent.
+  j.erase("power_law");
+  CHECK_FALSE(capsule::maxwell_element_3d(Scene::from_json(j, "t.json"), u).present);
 }
 
 TEST_CASE("a 2D scene's canonical form does not depend on keys the 2D model ignores", "[scene]") {
