@@ -479,6 +479,7 @@ MemberStatus read_member_status(const std::string& path) {
   if (a.contains("threads") && a["threads"].is_number()) s.threads = a["threads"].get<long>();
   if (a.contains("code_version") && a["code_version"].is_string()) s.code_version = a["code_version"];
   if (a.contains("physics_version") && a["physics_version"].is_string()) s.physics_version = a["physics_version"];
+  if (a.contains("tau") && a["tau"].is_number()) s.tau = a["tau"].get<double>();
   return s;
 }
 

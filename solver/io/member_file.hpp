@@ -104,6 +104,8 @@ struct MemberStatus {
   long threads = 0;
   // Provenance: the build that wrote it (a `-dirty` one is not reproducible) and its physics.
   std::string code_version, physics_version;
+  // The fluid's relaxation time the member ran with (the scene's, or the rule's when it is 0).
+  double tau = std::numeric_limits<double>::quiet_NaN();
 };
 MemberStatus read_member_status(const std::string& path);
 

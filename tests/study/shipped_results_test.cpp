@@ -10,6 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "solver/io/member_file.hpp"
+#include "solver/scene/scene.hpp"
+#include "solver/scene/units.hpp"
 #include "solver/scene/version.hpp"
 #include "study/run/provenance.hpp"
 #include "study/state/campaign_survey.hpp"
@@ -57,6 +59,10 @@ TEST_CASE("shipped results match their campaigns: no orphaned member or stale fo
       INFO(s.members[i].dir_name() << ": code " << status.code_version << ", physics " << status.physics_version);
       CHECK_FALSE(is_uncommitted_version(status.code_version));
       CHECK(status.physics_version == capsule::physics_version);
+      // And the relaxation time that today's rule chooses for it (a member whose scene leaves tau
+      // to the rule, run before the rule changed within a physics version, must be rerun).
+      const capsule::Scene scene = capsule::Scene::from_json(s.members[i].scene, s.members[i].dir_name());
+      if (scene.tau == 0 && status.status == "complete") CHECK(status.tau == Approx(capsule::choose_tau(scene)).epsilon(1e-12));
     }
     std::set<std::string> known;
     for (const auto& m : s.members) known.insert(m.dir_name());
