@@ -103,11 +103,11 @@ MaxwellElement3d maxwell_element_3d(const Scene& s, const Units& u) {
 }
 
 double maxwell_stiffness_number(const Scene& s, double tau) {
-  const MaxwellElement3d m = maxwell_element_3d(s, units_for(s, tau));
+  const Units u = units_for(s, tau);
+  const MaxwellElement3d m = maxwell_element_3d(s, u);
   if (!m.present) return 0.0;
-  const double nu = (tau - 0.5) / 3.0;
-  if (m.power_law) return m.E_m / nu;
-  return m.E_m * m.tau_m * (1.0 - std::exp(-1.0 / m.tau_m)) / nu;
+  if (m.power_law) return m.E_m / u.nu;
+  return m.E_m * m.tau_m * (1.0 - std::exp(-1.0 / m.tau_m)) / u.nu;
 }
 
 double dimensionless_E_b(const Scene& s) {
