@@ -51,22 +51,21 @@ int report_campaign(const CampaignSurvey& survey, const ReportOptions& options, 
   request.campaign_file = survey.campaign.source;
   request.out_dir = staging.string();
   request.analysis = survey.campaign.analysis;
-  std::size_t missing = 0;
+  std::vector<std::string> not_run;     // "member: state", members without a final file yet
   std::vector<std::string> unreadable;  // "member: reason"
   for (std::size_t i = 0; i < survey.members.size(); ++i) {
     const Member& m = survey.members[i];
     const MemberPaths p = survey.layout.member(m);
     if (!fs::exists(p.h5)) {
-      ++missing;
-      continue;  // never run, or failed without a file: nothing to analyse
-    }
-    if (survey.conditions[i].state == MemberState::unreadable) {
+      // Never run, running, or killed: no file to analyse, but the report lists it (as "member
+      // file missing") so that a table of a campaign still under way says what it lacks.
+      not_run.push_back(m.dir_name() + ": " + state_name(survey.conditions[i].state));
+    } else if (survey.conditions[i].state == MemberState::unreadable) {
       unreadable.push_back(m.dir_name() + ": " + survey.conditions[i].reason);
       continue;
-    }
-    // The member's own file only: inspect_member checks its member_id (a file copied from
-    // another campaign, or made by older physics, is "failed", as in `study status`).
-    if (survey.conditions[i].state == MemberState::failed) {
+    } else if (survey.conditions[i].state == MemberState::failed) {
+      // The member's own file only: inspect_member checks its member_id (a file copied from
+      // another campaign, or made by older physics, is "failed", as in `study status`).
       out << "skipped " << m.dir_name() << ": " << survey.conditions[i].reason << "\n";
       continue;
     }
@@ -75,8 +74,9 @@ int report_campaign(const CampaignSurvey& survey, const ReportOptions& options, 
     for (const auto& other : m.other_cases)
       request.members.push_back(analysis::MemberRef{m.id, m.slug, p.h5.string(), other, m.scene});
   }
-  if (missing > 0)
-    out << missing << " of " << survey.members.size() << " members have no member file yet (see `study status`)\n";
+  if (!not_run.empty())
+    out << not_run.size() << " of " << survey.members.size()
+        << " members have no member file yet: the report says so in INCOMPLETE.md (see `study status`)\n";
   fs::remove_all(staging);
   analysis::ReportSummary summary;
   try {
@@ -102,6 +102,16 @@ int report_campaign(const CampaignSurvey& survey, const ReportOptions& options, 
     for (const auto& u : unreadable) note += "- " + u + "\n";
     write_file_atomically(staging / "PARTIAL.md", note);
     summary.files.push_back((staging / "PARTIAL.md").string());
+  }
+  if (!not_run.empty()) {
+    std::string note = "# This campaign is not complete\n\n" + std::to_string(not_run.size()) + " of " +
+                       std::to_string(survey.members.size()) +
+                       " members have no member file yet. The report's tables list them as \"member file missing\" "
+                       "and every fit, model or ladder that needs them is missing or rests on the others; "
+                       "`study run` completes them and `study report` then writes the whole report.\n\n";
+    for (const auto& n : not_run) note += "- " + n + "\n";
+    write_file_atomically(staging / "INCOMPLETE.md", note);
+    summary.files.push_back((staging / "INCOMPLETE.md").string());
   }
   swap_in(staging, report_dir);
   for (auto f : summary.files) {
