@@ -1,5 +1,6 @@
 // `study`: plan, run, track, export and analyse campaigns (docs/guide/campaigns.md "Commands").
 #include <CLI/CLI.hpp>
+#include <csignal>
 #include <filesystem>
 #include <iostream>
 #include <unistd.h>
@@ -191,10 +192,19 @@ int main_body(int argc, char** argv) {
     run_request.progress_bar = ::isatty(STDOUT_FILENO) != 0;
     const std::vector<std::string> files = campaign_files_of(run_files);
     std::vector<int> codes;
-    for (const auto& file : files) {
-      if (files.size() > 1) std::cout << "\n== " << file << "\n" << std::flush;
-      run_request.campaign_file = file;
+    for (std::size_t i = 0; i < files.size(); ++i) {
+      if (files.size() > 1) std::cout << "\n== " << files[i] << "\n" << std::flush;
+      run_request.campaign_file = files[i];
       codes.push_back(run_campaign(run_request, std::cout).exit_code);
+      if (const int signal = stop_signal_received(); signal != 0 && i + 1 < files.size()) {
+        std::cout << "\nstopped by signal " << signal << " (" << (signal == SIGINT ? "SIGINT" : "SIGTERM")
+                  << "): " << files.size() - i - 1 << " campaign" << (files.size() - i - 1 == 1 ? "" : "s")
+                  << " not started:";
+        for (std::size_t j = i + 1; j < files.size(); ++j) std::cout << " " << files[j];
+        std::cout << "\n";
+        codes.push_back(exit_members_missing);
+        break;
+      }
     }
     return worst_exit_code(codes);
   }

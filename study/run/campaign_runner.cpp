@@ -41,24 +41,29 @@ namespace fs = std::filesystem;
 namespace {
 
 volatile sig_atomic_t child_pid = 0;
+volatile sig_atomic_t stop_signal_seen = 0;  // SIGTERM or SIGINT received while members ran
 
 // SIGTERM to study is passed on to GNU Parallel (which then stops starting members and
 // ends), so `kill <study pid>` still ends in a summary.
-extern "C" void forward_sigterm(int) {
+extern "C" void forward_sigterm(int signal) {
+  stop_signal_seen = signal;
   if (child_pid > 0) ::kill(static_cast<pid_t>(child_pid), SIGTERM);
 }
 
+// Ctrl-C reaches GNU Parallel through the terminal's process group; study only notes it.
+extern "C" void note_interrupt(int signal) { stop_signal_seen = signal; }
+
 // Runs argv (no shell) and waits. Ctrl-C reaches GNU Parallel through the terminal's
-// process group; study ignores it meanwhile so it can still print the summary.
+// process group; study only notes it meanwhile so it can still print the summary.
 int run_and_wait(const std::vector<std::string>& argv, const std::function<void(long)>& started,
                  const std::function<void()>& every_second) {
   std::vector<char*> args;
   for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
-  struct sigaction ignore {}, forward {}, old_int {}, old_term {};
-  ignore.sa_handler = SIG_IGN;
+  struct sigaction note {}, forward {}, old_int {}, old_term {};
+  note.sa_handler = note_interrupt;
   forward.sa_handler = forward_sigterm;
-  sigaction(SIGINT, &ignore, &old_int);
+  sigaction(SIGINT, &note, &old_int);
   sigaction(SIGTERM, &forward, &old_term);
   const pid_t pid = ::fork();
   if (pid < 0) throw std::runtime_error(std::string("fork failed: ") + std::strerror(errno));
@@ -92,6 +97,8 @@ int run_and_wait(const std::vector<std::string>& argv, const std::function<void(
 }
 
 }  // namespace
+
+int stop_signal_received() { return stop_signal_seen; }
 
 void print_status(const CampaignSurvey& survey, std::ostream& out) {
   out << "campaign " << survey.campaign.name << ": " << survey.members.size() << " members in "
@@ -273,7 +280,12 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
     record["parallel_exit_status"] = parallel_status;
     // 1-100: that many jobs failed, 101: more; the members' own files tell which. 255 (or any
     // other status) is GNU Parallel's own failure: a bad option or hosts file, no such program.
-    if (parallel_status > 101) {
+    if (stop_signal_seen != 0) {
+      // GNU Parallel passes the signal on to the running members and ends with 255.
+      out << "study: stopped by signal " << stop_signal_seen
+          << ": the running members were told to write a restart point; `study run` continues them\n";
+      record["stopped_by_signal"] = static_cast<int>(stop_signal_seen);
+    } else if (parallel_status > 101) {
       out << "study: GNU Parallel itself failed (exit status " << parallel_status
           << "; its message is above): members it did not start are still new\n";
       outcome.tool_failed = true;

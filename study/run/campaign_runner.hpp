@@ -41,6 +41,10 @@ struct RunOutcome {
 
 RunOutcome run_campaign(const RunRequest& request, std::ostream& out);
 
+// The SIGTERM or SIGINT that stopped a run of members (passed on to GNU Parallel), 0 if none:
+// `study run A.json B.json` starts no further campaign after it.
+int stop_signal_received();
+
 // Prints counts per state and every member that is not complete, with its reason.
 void print_status(const CampaignSurvey& survey, std::ostream& out);
 

@@ -1,0 +1,61 @@
+// `study run A.json B.json` stopped by SIGTERM (a scheduler's time limit, `kill`) stops there:
+// the running campaign's members get their restart points and no later campaign starts.
+#include <catch2/catch.hpp>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <thread>
+
+#include "study/state/campaign_survey.hpp"
+#include "study/state/exit_status.hpp"
+#include "tests/study/study_test_support.hpp"
+
+using namespace capsule::study;
+namespace fs = std::filesystem;
+
+TEST_CASE("SIGTERM to study run stops it: the campaigns after the running one are not started", "[study]") {
+  const fs::path dir = testing::scratch_dir("run_stop");
+  // The first member runs for many seconds (kt 30 at about 0.25 s per kt), so the signal finds it running.
+  testing::write_text(dir / "first.json", testing::tiny_campaign("stop_first", {0.02}, 30, 0).dump());
+  testing::write_text(dir / "second.json", testing::tiny_campaign("stop_second", {0.02}, 0.3, 0).dump());
+  const fs::path log = dir / "study.log";
+  const pid_t study = ::fork();
+  if (study == 0) {
+    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(fd, STDOUT_FILENO);
+    ::dup2(fd, STDERR_FILENO);
+    if (::chdir(dir.c_str()) != 0) ::_exit(127);
+    ::setenv("CAPSULE_BIN", testing::capsule_binary().c_str(), 1);
+    const std::string bin = testing::study_binary().string();
+    ::execl(bin.c_str(), bin.c_str(), "run", "first.json", "second.json", "-j", "1", static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  const CampaignSurvey first = survey_campaign((dir / "first.json").string(), dir / "results");
+  const MemberPaths p = first.layout.member(first.members[0]);
+  bool running = false;
+  for (int i = 0; i < 3000 && !running; ++i) {  // up to 30 s for GNU Parallel and capsule to start
+    running = fs::exists(p.partial) && fs::exists(p.progress);
+    if (!running) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  REQUIRE(running);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  ::kill(study, SIGTERM);
+  int status = 0;
+  ::waitpid(study, &status, 0);
+  const std::string output = testing::read_text(log);
+  INFO(output);
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == exit_members_missing);
+  CHECK_THAT(output, Catch::Contains("stopped by signal 15 (SIGTERM): 1 campaign not started: second.json"));
+  const CampaignSurvey second = survey_campaign((dir / "second.json").string(), dir / "results");
+  CHECK_FALSE(fs::exists(second.layout.member(second.members[0]).h5));
+  CHECK_FALSE(fs::exists(second.layout.member(second.members[0]).partial));
+  // The stopped member can continue: it was interrupted, not ended.
+  CHECK(survey_campaign((dir / "first.json").string(), dir / "results").conditions[0].state ==
+        MemberState::interrupted);
+  fs::remove_all(dir);
+}
