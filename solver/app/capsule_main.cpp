@@ -2,6 +2,7 @@
 // Thin command line over the solver library; all physics lives in solver/.
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "solver/app/cli_support.hpp"
 #include "solver/app/reference_bim_command.hpp"
@@ -11,6 +12,8 @@
 #include "solver/scene/memory_estimate.hpp"
 #include "solver/run/run_member.hpp"
 #include "solver/scene/scene.hpp"
+#include "solver/scene/version.hpp"
+#include "build_info.hpp"
 
 namespace {
 // docs/guide/scenes.md "Exit status"; run_member() and `check` return these.
@@ -45,6 +48,15 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  if (argc >= 2 && std::string(argv[1]) == "version") {
+    // What a member file of this binary records (study run checks it before each member).
+    CLI::App app{"capsule version: the code version and physics version this binary records in a member file, as JSON"};
+    app.footer("Exit status: 0 printed, 2 bad command line.");
+    if (const int code = capsule::cli::parse_or_exit_code(app, argc - 1, argv + 1); code >= 0) return code;
+    std::cout << nlohmann::json{{"code_version", capsule::build::code_version},
+                                {"physics_version", capsule::physics_version}}.dump() << "\n";
+    return 0;
+  }
   if (argc >= 2 && std::string(argv[1]) == "reference-bim") return capsule::cli::reference_bim_command(argc - 1, argv + 1);
   if (argc >= 2 && std::string(argv[1]) == "rigid-sphere") return capsule::cli::rigid_sphere_command(argc - 1, argv + 1);
   if (argc >= 2 && std::string(argv[1]) == "bench") {
@@ -74,6 +86,7 @@ int main(int argc, char** argv) {
   CLI::App app{"capsule: one capsule in shear flow (IB + MRT lattice Boltzmann + membrane FEM)\n"
                "  capsule SCENE.json -o MEMBER.h5   run one scene\n"
                "  capsule check SCENE.json          validate a scene\n"
+               "  capsule version                   the code and physics version a member file records\n"
                "  capsule bench lbm                 fluid benchmark\n"
                "  capsule bench member3d            3D step benchmark, by part\n"
                "  capsule reference-bim --ca CA     boundary-integral reference capsule\n"

@@ -94,6 +94,8 @@ int main_body(int argc, char** argv) {
       ->required()->check(CLI::ExistingDirectory);
   run_member->add_option("threads", member_request.threads, "OpenMP threads of the member")->required()->check(count);
   run_member->add_option("--capsule", member_request.capsule_binary, "the capsule binary")->required();
+  run_member->add_option("--code-version", member_request.expected_code_version,
+                         "start the member only if the capsule binary reports this code version (`capsule version`)");
   run_member->add_option("--checkpoint-seconds", member_request.checkpoint_seconds,
                          "wall seconds between restart points")
       ->capture_default_str()->check(CLI::PositiveNumber);

@@ -154,11 +154,17 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
                            "a dotted key of the canonical scene (capsule check) and a value some member has");
   }
   // Refused before anything is written: a dirty build's members could not be reproduced.
+  // The capsule binary's version is what its member files record: checked here, and again by
+  // run-member before each member, so a binary rebuilt mid-campaign cannot mix versions.
+  const fs::path capsule_binary = find_capsule_binary();
+  std::string capsule_version;
   if (std::any_of(survey.conditions.begin(), survey.conditions.end(), [&](const MemberCondition& c) {
         return needs_run(c, request.rerun_unstable, request.rerun_stopped);
-      }))
+      })) {
     require_committed_build(build::code_version, request.allow_dirty, "study run");
-  const fs::path capsule_binary = find_capsule_binary();
+    capsule_version = capsule_code_version(capsule_binary);
+    require_committed_build(capsule_version, request.allow_dirty, "study run (capsule binary " + capsule_binary.string() + ")");
+  }
   // The job list has one member directory per line; the wrapper names the capsule binary.
   require_script_safe("the results folder", survey.layout.root);
   require_script_safe("the capsule binary's path", capsule_binary);
@@ -208,6 +214,7 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
   }
   nlohmann::json record = run_record_start(survey.campaign.name, request.campaign_file);
   record["capsule_binary"] = capsule_binary.string();
+  record["capsule_code_version"] = capsule_version;
   record["members"] = survey.members.size();
   record["to_run"] = to_run.size();
   record["copied_from_other_campaigns"] = copied_count;
@@ -230,7 +237,7 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
     }
     write_file_atomically(survey.layout.jobs_file(), job_list);
     write_member_wrapper(survey.layout.wrapper(),
-                         {survey.campaign.name, own_executable(), capsule_binary, request.checkpoint_seconds});
+                         {survey.campaign.name, own_executable(), capsule_binary, request.checkpoint_seconds, capsule_version});
     write_file_atomically(survey.layout.run_json(), record.dump(2) + "\n");
 
     // No --halt: a failed member never stops the others. The command template holds no user

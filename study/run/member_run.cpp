@@ -9,11 +9,13 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "build_info.hpp"
+#include "study/run/capsule_binary.hpp"
 #include "solver/run/run_member.hpp"
 #include "study/run/member_lock.hpp"
 #include "study/state/member_state.hpp"
@@ -70,6 +72,25 @@ int run_one_member(const MemberRunRequest& request, std::ostream& log) {
     log << "study run-member: " << name << " is " << state_name(before.state) << ": nothing run"
         << (before.reason.empty() ? "" : " (" + before.reason + ")") << "\n";
     return 0;
+  }
+  // The binary may have been rebuilt since the run began: its members would record another
+  // code version than the campaign's others (or a -dirty one). Nothing of the member is touched.
+  if (!request.expected_code_version.empty()) {
+    std::string now;
+    try {
+      now = capsule_code_version(request.capsule_binary);
+    } catch (const std::exception& e) {
+      now = std::string("unknown (") + e.what() + ")";
+    }
+    if (now != request.expected_code_version) {
+      const std::string why = "study run-member: " + name + " not started: the capsule binary " +
+                              request.capsule_binary.string() + " now reports code version " + now +
+                              ", the run began with " + request.expected_code_version +
+                              " (rebuilt meanwhile?); run `study run` again to start it with this binary\n";
+      log << why;
+      std::ofstream(paths.log, std::ios::app) << why;
+      return kExitBinaryChanged;
+    }
   }
   std::error_code ec;
   fs::remove(paths.exit_status, ec);

@@ -5,26 +5,34 @@
 //      alone (exit 0), so a duplicate or stale submission never runs one member twice at once;
 //   2. exits 0 at once when member.h5 is complete with this member's id, or cannot be read:
 //      a complete member file is never rewritten;
-//   3. clears the previous attempt's exit_status and .partial, runs capsule with its output
+//   3. with --code-version V (the wrapper passes the version the run or export began with),
+//      exits 3 without touching the member when the capsule binary now reports another: a
+//      binary rebuilt mid-campaign would record a second code version in one campaign;
+//   4. clears the previous attempt's exit_status and .partial, runs capsule with its output
 //      appended to capsule.log, passes SIGTERM, SIGINT, SIGUSR1 and SIGHUP on to it (capsule then
 //      writes a restart point and stops, exit 4: the next run continues there), keeps the lock's
 //      heartbeat, and records capsule's exit status in exit_status (not after a stop by signal:
 //      the member is interrupted, not ended);
-//   4. in a Slurm task (SLURM_JOB_ID set), appends a record of the task to the campaign's
+//   5. in a Slurm task (SLURM_JOB_ID set), appends a record of the task to the campaign's
 //      runs.jsonl.
 // Its exit status is 0 whatever the member's end (study reads that from the member's files), so
 // GNU Parallel's --retries repeats only what failed to start: ssh's 255, or 126/127 when the
 // capsule binary cannot be run on that host.
 #include <filesystem>
 #include <ostream>
+#include <string>
 
 namespace capsule::study {
+
+// run-member's exit status when the capsule binary's code version is not the run's (step 3).
+inline constexpr int kExitBinaryChanged = 3;
 
 struct MemberRunRequest {
   std::filesystem::path member_dir;
   int threads = 1;
   std::filesystem::path capsule_binary;
   double checkpoint_seconds = 300;  // capsule --checkpoint-seconds
+  std::string expected_code_version;  // when set, a capsule binary reporting another is not run
 };
 
 int run_one_member(const MemberRunRequest& request, std::ostream& log);

@@ -16,6 +16,7 @@ std::string member_wrapper_text(const WrapperSettings& w) {
          "# passes signals on to it and records its exit status (study/run/member_run.hpp).\n"
          "exec " + shell_quote(w.study_binary.string()) + " run-member --capsule " +
          shell_quote(w.capsule_binary.string()) + " --checkpoint-seconds " + std::to_string(w.checkpoint_seconds) +
+         (w.capsule_code_version.empty() ? "" : " --code-version " + shell_quote(w.capsule_code_version)) +
          " -- \"$1\" \"$2\"\n";
 }
 

@@ -15,6 +15,9 @@ struct WrapperSettings {
   std::string campaign_name;
   std::filesystem::path study_binary, capsule_binary;
   double checkpoint_seconds = 300;
+  // The capsule binary's code version when the run or export began: run-member refuses to
+  // start a member with a binary that reports another (rebuilt mid-campaign). Empty: no check.
+  std::string capsule_code_version;
 };
 
 std::string member_wrapper_text(const WrapperSettings& settings);

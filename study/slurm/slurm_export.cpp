@@ -79,6 +79,8 @@ SlurmExport export_slurm(const CampaignSurvey& survey, const SlurmOptions& optio
   const fs::path capsule_binary = find_capsule_binary();
   const fs::path slurm_dir = survey.layout.slurm_dir();
   require_committed_build(build::code_version, options.allow_dirty, "study export");
+  const std::string capsule_version = capsule_code_version(capsule_binary);
+  require_committed_build(capsule_version, options.allow_dirty, "study export (capsule binary " + capsule_binary.string() + ")");
   // Every path and name that reaches the job list or a script, checked before anything is written.
   require_script_safe("the results folder", survey.layout.root);
   require_script_safe("the capsule binary's path", capsule_binary);
@@ -151,7 +153,7 @@ SlurmExport export_slurm(const CampaignSurvey& survey, const SlurmOptions& optio
       fs::remove(e.path());
   write_file_atomically(result.job_list, list);
   write_member_wrapper(survey.layout.wrapper(),
-                       {survey.campaign.name, own_executable(), capsule_binary, options.checkpoint_seconds});
+                       {survey.campaign.name, own_executable(), capsule_binary, options.checkpoint_seconds, capsule_version});
 
   const SlurmResources& r = result.resources;
   nlohmann::json record = {{"exported", utc_now_iso8601()},

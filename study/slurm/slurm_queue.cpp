@@ -1,6 +1,7 @@
 #include "study/slurm/slurm_queue.hpp"
 
-#include <sys/wait.h>
+#include "study/run/captured_command.hpp"
+
 #include <unistd.h>
 
 #include <cerrno>
@@ -14,43 +15,6 @@ namespace capsule::study {
 namespace fs = std::filesystem;
 
 namespace {
-
-// Runs argv (no shell) and returns its standard output; exit < 0 when it could not be run.
-std::string capture(const std::vector<std::string>& words, int& exit_status) {
-  exit_status = -1;
-  int pipe_fd[2];
-  if (::pipe(pipe_fd) != 0) return "";
-  const pid_t pid = ::fork();
-  if (pid < 0) {
-    ::close(pipe_fd[0]);
-    ::close(pipe_fd[1]);
-    return "";
-  }
-  if (pid == 0) {
-    ::dup2(pipe_fd[1], STDOUT_FILENO);
-    ::close(pipe_fd[0]);
-    ::close(pipe_fd[1]);
-    std::vector<char*> argv;
-    for (const auto& w : words) argv.push_back(const_cast<char*>(w.c_str()));
-    argv.push_back(nullptr);
-    ::execvp(argv[0], argv.data());
-    ::_exit(127);
-  }
-  ::close(pipe_fd[1]);
-  std::string out;
-  char buf[4096];
-  for (ssize_t n; (n = ::read(pipe_fd[0], buf, sizeof buf)) != 0;) {
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) break;
-    out.append(buf, static_cast<std::size_t>(n));
-  }
-  ::close(pipe_fd[0]);
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  return out;
-}
 
 bool on_path(const std::string& program) {
   const char* path = std::getenv("PATH");
@@ -84,7 +48,7 @@ SlurmQueue slurm_queue(const ResultsLayout& layout) {
   }
   int status = 0;
   const std::string out =
-      capture({"squeue", "--noheader", "--array", std::string("--name=").append(names), "--format=%j %K %T"}, status);
+      captured_output({"squeue", "--noheader", "--array", std::string("--name=").append(names), "--format=%j %K %T"}, status);
   if (status != 0) {
     q.note = std::string("squeue failed (exit status ").append(std::to_string(status)).append("): queued Slurm tasks are not known");
     return q;

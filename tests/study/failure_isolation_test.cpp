@@ -45,10 +45,14 @@ TEST_CASE("failed and unstable members do not stop the others", "[study]") {
 }
 
 TEST_CASE("a capsule that exits without a member file is reported failed with its log", "[study]") {
-  // CAPSULE_BIN pointing at /bin/false: the wrapper records exit status 1 and no file.
+  // A capsule that says its version and then fails at once (as /bin/false): the wrapper records
+  // exit status 1 and no file.
   const fs::path dir = testing::scratch_dir("nofile");
   testing::write_text(dir / "c.json", testing::tiny_campaign("nofile", {0.05}, 1, 1).dump());
-  const auto run = testing::run_shell("cd '" + dir.string() + "' && CAPSULE_BIN=/bin/false '" +
+  testing::write_text(dir / "failing-capsule", "#!/bin/sh\n[ \"$1\" = version ] && exec '" +
+                                                   testing::capsule_binary().string() + "' version\nexit 1\n");
+  fs::permissions(dir / "failing-capsule", fs::perms::owner_all);
+  const auto run = testing::run_shell("cd '" + dir.string() + "' && CAPSULE_BIN=failing-capsule '" +
                                       testing::study_binary().string() + "' run c.json </dev/null");
   INFO(run.output);
   CHECK(run.exit_code == 3);
