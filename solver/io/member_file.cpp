@@ -480,6 +480,15 @@ MemberStatus read_member_status(const std::string& path) {
   if (a.contains("code_version") && a["code_version"].is_string()) s.code_version = a["code_version"];
   if (a.contains("physics_version") && a["physics_version"].is_string()) s.physics_version = a["physics_version"];
   if (a.contains("tau") && a["tau"].is_number()) s.tau = a["tau"].get<double>();
+  if (a.contains("scene") && a["scene"].is_string())
+    s.scene = nlohmann::json::parse(a["scene"].get<std::string>(), nullptr, /*allow_exceptions=*/false);
+  if (s.scene.is_discarded()) s.scene = nullptr;
+  if (H5Lexists(file, "markers", H5P_DEFAULT) > 0) {
+    Handle markers(H5Gopen2(file, "markers", H5P_DEFAULT), H5Gclose);
+    const auto m = read_attributes(markers, path);
+    if (m.contains("t_stop") && m["t_stop"].is_number()) s.t_stop = m["t_stop"].get<double>();
+    if (m.contains("t_end") && m["t_end"].is_number()) s.t_end = m["t_end"].get<double>();
+  }
   return s;
 }
 

@@ -106,6 +106,11 @@ struct MemberStatus {
   std::string code_version, physics_version;
   // The fluid's relaxation time the member ran with (the scene's, or the rule's when it is 0).
   double tau = std::numeric_limits<double>::quiet_NaN();
+  // How long its phases ran (markers t_stop and t_end, NaN when absent), and its canonical scene
+  // (null when absent): for the planner's expected phase lengths.
+  double t_stop = std::numeric_limits<double>::quiet_NaN();
+  double t_end = std::numeric_limits<double>::quiet_NaN();
+  nlohmann::json scene;
 };
 MemberStatus read_member_status(const std::string& path);
 

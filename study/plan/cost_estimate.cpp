@@ -59,7 +59,7 @@ double CostEstimate::seconds_for_steps(double steps, int threads) const {
                   membrane_seconds_per_step / (1.0 + membrane_thread_efficiency * (t - 1.0)));
 }
 
-CostEstimate estimate_cost(const nlohmann::json& canonical_scene) {
+CostEstimate estimate_cost(const nlohmann::json& canonical_scene, const PhaseLengths* lengths) {
   const Scene scene = Scene::from_json(canonical_scene, "member scene");
   CostEstimate c;
   c.nodes = 1;
@@ -70,8 +70,15 @@ CostEstimate estimate_cost(const nlohmann::json& canonical_scene) {
     return p.max_kt;
   };
   c.kt_span = phase_span(scene.shear) + phase_span(scene.recover);
-  c.expected_kt = expected_phase_kt(scene.shear, false) + expected_phase_kt(scene.recover, true);
-  if (scene.recover.until == "time" && scene.recover.kt <= 0) c.expected_kt = expected_phase_kt(scene.shear, false);
+  // A phase that ends on a condition: as long as its nearest finished neighbours ran, when
+  // there are any (phase_lengths.hpp), else the default members' measured end.
+  const auto expected = [&](const PhaseSpec& p, bool recovery) {
+    if (lengths != nullptr)
+      if (const auto kt = lengths->expected_kt(canonical_scene, recovery)) return *kt;
+    return expected_phase_kt(p, recovery);
+  };
+  c.expected_kt = expected(scene.shear, false) + expected(scene.recover, true);
+  if (scene.recover.until == "time" && scene.recover.kt <= 0) c.expected_kt = expected(scene.shear, false);
   c.steps_per_kt = units_for(scene, choose_tau(scene)).steps_per_kt;  // the tau the solver will run
   const double nodes = static_cast<double>(c.nodes);
   if (scene.dim == 2) {

@@ -8,11 +8,14 @@
 // D3Q19), the membrane cost per vertex (3D) or segment (2D) and term (elasticity, SLS, bending
 // curvature fit, IB coupling by kernel width, viscosity contrast, power law), and the number
 // of steps from the protocol: a set duration exactly, a phase that ends on a condition at its
-// expected time (steady shear: window + 1.6 kt; settled recovery: window + 2.6 kt, the
-// measured ends of the default members), a theta or beta stop at its cap.
+// expected time (the length its nearest finished neighbours ran, phase_lengths.hpp; with none,
+// steady shear: window + 1.6 kt, settled recovery: window + 2.6 kt, the measured ends of the
+// default members), a theta or beta stop at its cap.
 // After members have run, calibrate() corrects the model by their measured speed.
 #include <nlohmann/json.hpp>
 #include <vector>
+
+#include "study/plan/phase_lengths.hpp"
 
 namespace capsule::study {
 
@@ -35,7 +38,9 @@ struct CostEstimate {
 };
 
 // From a complete canonical scene (Scene::to_json). Throws SceneError on an invalid scene.
-CostEstimate estimate_cost(const nlohmann::json& canonical_scene);
+// With lengths, a phase that ends on a condition is expected to run as long as its nearest
+// finished neighbours did (phase_lengths.hpp); without, or with none, at the default end.
+CostEstimate estimate_cost(const nlohmann::json& canonical_scene, const PhaseLengths* lengths = nullptr);
 
 // Measured speed of finished members against the model: factor = sum of measured wall
 // seconds / sum of model seconds for the steps they took (1 with no measurement). And, for

@@ -17,12 +17,13 @@ bool add_measurement(MeasuredSpeed& speed, const Member& member, const MemberPat
   }
   if (s.member_id != member.id || !std::isfinite(s.wall_seconds) || !std::isfinite(s.steps) || s.steps <= 0) return false;
   const int dim = member.scene.at("dim").get<int>();
-  speed.for_dim(dim).add(estimate_cost(member.scene), s.steps, static_cast<int>(std::max(1L, s.threads)), s.wall_seconds);
+  speed.for_dim(dim).add(estimate_cost(member.scene, &speed.lengths), s.steps, static_cast<int>(std::max(1L, s.threads)), s.wall_seconds);
   return true;
 }
 
 MeasuredSpeed measure_speed(const CampaignSurvey& survey) {
   MeasuredSpeed speed;
+  speed.lengths = PhaseLengths::from_results(survey.layout.root.parent_path());
   for (const auto& m : survey.members) add_measurement(speed, m, survey.layout.member(m));
   return speed;
 }

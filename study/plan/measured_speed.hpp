@@ -9,11 +9,15 @@ namespace capsule::study {
 
 struct MeasuredSpeed {
   SpeedCalibration d2, d3;
+  // The phase lengths of every finished member in the results folder (the campaign's own and
+  // the others'): what estimate_cost expects a phase that ends on a condition to take.
+  PhaseLengths lengths;
   const SpeedCalibration& for_dim(int dim) const { return dim == 3 ? d3 : d2; }
   SpeedCalibration& for_dim(int dim) { return dim == 3 ? d3 : d2; }
 };
 
-// From every member of the survey whose member.h5 records its wall time (complete, unstable).
+// From every member of the survey whose member.h5 records its wall time (complete, unstable),
+// with the phase lengths of the finished members under the survey's results folder.
 MeasuredSpeed measure_speed(const CampaignSurvey& survey);
 
 // One member's measured figures into `speed` (false when the file records none).

@@ -49,7 +49,7 @@ CampaignEstimate estimate_campaign(const CampaignSurvey& survey, const MeasuredS
   for (std::size_t i = 0; i < survey.members.size(); ++i) {
     if (!needs_run(survey.conditions[i], false, false)) continue;
     const Member& m = survey.members[i];
-    const double s = estimated_member_seconds(estimate_cost(m.scene), m.scene.at("dim").get<int>(), e.threads, speed);
+    const double s = estimated_member_seconds(estimate_cost(m.scene, &speed.lengths), m.scene.at("dim").get<int>(), e.threads, speed);
     e.member_seconds += s;
     longest = std::max(longest, s);
   }
@@ -62,6 +62,7 @@ PlanSummary print_plan(const Campaign& plan_campaign, const ResultsLayout& layou
   PlanSummary summary;
   // Pass 1, member by member: the measured speeds of members that ran, and what is pending.
   MeasuredSpeed speed;
+  speed.lengths = PhaseLengths::from_results(layout.root.parent_path());
   std::size_t pending_count = 0;
   bool any_3d = false;
   std::set<std::string> strays = member_folder_names(layout);  // emptied of the members' folders below
@@ -121,7 +122,7 @@ PlanSummary print_plan(const Campaign& plan_campaign, const ResultsLayout& layou
         const MemberCondition condition = inspect_member(layout.member(m), m.id);
         ++counts[condition.state];
         const int dim = m.scene.at("dim").get<int>();
-        const CostEstimate c = estimate_cost(m.scene);
+        const CostEstimate c = estimate_cost(m.scene, &speed.lengths);
         const std::optional<FinishedMember> copy_from = copyable(m, condition);
         if (copy_from) ++copies;
         const bool pending = condition.state != MemberState::complete && !copy_from;

@@ -20,7 +20,7 @@ CampaignProgress::CampaignProgress(const CampaignSurvey& survey, std::vector<std
                                    bool terminal, std::ostream& out)
     : survey_(survey), to_run_(std::move(to_run)), measured_(to_run_.size(), false), speed_(measure_speed(survey)),
       jobs_(std::max(1, jobs)), threads_(std::max(1, threads)), terminal_(terminal), out_(out) {
-  for (std::size_t i : to_run_) cost_.push_back(estimate_cost(survey.members[i].scene));
+  for (std::size_t i : to_run_) cost_.push_back(estimate_cost(survey.members[i].scene, &speed_.lengths));
 }
 
 CampaignProgress::Counts CampaignProgress::count() {
