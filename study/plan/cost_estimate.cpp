@@ -77,8 +77,8 @@ CostEstimate estimate_cost(const nlohmann::json& canonical_scene, const PhaseLen
       if (const auto kt = lengths->expected_kt(canonical_scene, recovery)) return *kt;
     return expected_phase_kt(p, recovery);
   };
-  c.expected_kt = expected(scene.shear, false) + expected(scene.recover, true);
-  if (scene.recover.until == "time" && scene.recover.kt <= 0) c.expected_kt = expected(scene.shear, false);
+  const bool no_recovery = scene.recover.until == "time" && scene.recover.kt <= 0;
+  c.expected_kt = expected(scene.shear, false) + (no_recovery ? 0.0 : expected(scene.recover, true));
   c.steps_per_kt = units_for(scene, choose_tau(scene)).steps_per_kt;  // the tau the solver will run
   const double nodes = static_cast<double>(c.nodes);
   if (scene.dim == 2) {

@@ -19,48 +19,65 @@ std::string text_at(const nlohmann::json& j, const nlohmann::json::json_pointer&
   return j.contains(p) && j.at(p).is_string() ? j.at(p).get<std::string>() : std::string();
 }
 
-// The stopping rule of a phase: members are neighbours only when theirs is the same (the cap
-// aside: it bounds the expectation, whoever's neighbour it is).
-bool same_rule(const nlohmann::json& a, const nlohmann::json& b, const char* phase) {
+// The stopping rule of a phase (the cap aside: it bounds the expectation, whoever's neighbour
+// it is): members are neighbours only when theirs is the same.
+std::string stopping_rule(const nlohmann::json& scene, const char* phase) {
   const nlohmann::json::json_pointer p(std::string("/protocol/") + phase);
-  if (!a.contains(p) || !b.contains(p)) return false;
-  const auto& x = a.at(p);
-  const auto& y = b.at(p);
-  for (const char* key : {"until", "window_kt", "tolerance"})
-    if (x.value(key, nlohmann::json()) != y.value(key, nlohmann::json())) return false;
-  return true;
-}
-
-// Distance between two members' physics: differences of the logarithms of the numbers that
-// set a capsule's relaxation (Ca, V, eta, E_b, the power law, G), and a fixed step for each
-// differing choice (dimension excluded: never neighbours). The weights were read off the
-// shipped results, where they predict the phase ends of one campaign from the others
-// (docs/findings/performance.md "Time estimates against measured runs").
-double distance(const nlohmann::json& a, const nlohmann::json& b) {
-  using P = nlohmann::json::json_pointer;
-  const auto log_of = [](const nlohmann::json& s, const char* key, double fallback) {
-    return std::log(std::max(1e-12, number_at(s, P(key), fallback)));
+  if (!scene.contains(p)) return "";
+  const auto& x = scene.at(p);
+  const auto number = [&](const char* key) {  // 2 and 2.0 are one window
+    return x.contains(key) && x.at(key).is_number() ? nlohmann::json(x.at(key).get<double>()).dump() : std::string("-");
   };
-  const auto log1p_of = [](const nlohmann::json& s, const char* key, double scale) {
-    return std::log1p(scale * std::max(0.0, number_at(s, P(key), 0.0)));
-  };
-  const auto power_n = [&](const nlohmann::json& s) { return number_at(s, P("/power_law/K"), 0) > 0 ? number_at(s, P("/power_law/n"), 1) : 1.0; };
-  const auto eta_G = [&](const nlohmann::json& s) { return number_at(s, P("/eta"), 0) > 0 ? std::log1p(number_at(s, P("/G"), 0)) : 0.0; };
-  double d = std::abs(log_of(a, "/Ca", 0.05) - log_of(b, "/Ca", 0.05)) + std::abs(log_of(a, "/V", 1) - log_of(b, "/V", 1)) +
-             std::abs(log1p_of(a, "/eta", 1) - log1p_of(b, "/eta", 1)) + std::abs(log1p_of(a, "/E_b", 20) - log1p_of(b, "/E_b", 20)) +
-             3.0 * std::abs(power_n(a) - power_n(b)) + std::abs(log1p_of(a, "/power_law/K", 1) - log1p_of(b, "/power_law/K", 1)) +
-             0.3 * std::abs(eta_G(a) - eta_G(b)) + 0.3 * std::abs(number_at(a, P("/c0"), 0) - number_at(b, P("/c0"), 0));
-  for (const auto& [key, step] : {std::pair{"/shape", 0.5}, {"/law", 0.5}, {"/reference_case", 0.5},
-                                  {"/conventions/sls_viscosity", 0.3}})
-    if (text_at(a, P(key)) != text_at(b, P(key))) d += step;
-  return d;
+  return x.value("until", std::string()) + " " + number("window_kt") + " " + number("tolerance");
 }
 
 }  // namespace
 
+// What sets a capsule's relaxation, read once per member: the logarithms of Ca and V, eta,
+// E_b, the power law and G, and the discrete choices.
+PhaseLengths::Physics PhaseLengths::physics_of(const nlohmann::json& s) {
+  using P = nlohmann::json::json_pointer;
+  const auto log1p_of = [&](const char* key, double scale) {
+    return std::log1p(scale * std::max(0.0, number_at(s, P(key), 0.0)));
+  };
+  Physics f;
+  f.dim = s.value("dim", 0);
+  f.log_Ca = std::log(std::max(1e-12, number_at(s, P("/Ca"), 0.05)));
+  f.log_V = std::log(std::max(1e-12, number_at(s, P("/V"), 1)));
+  f.eta = log1p_of("/eta", 1);
+  f.E_b = log1p_of("/E_b", 20);
+  const bool power_law = number_at(s, P("/power_law/K"), 0) > 0;
+  f.power_n = power_law ? number_at(s, P("/power_law/n"), 1) : 1.0;
+  f.power_K = log1p_of("/power_law/K", 1);
+  f.G = number_at(s, P("/eta"), 0) > 0 ? std::log1p(number_at(s, P("/G"), 0)) : 0.0;
+  f.c0 = number_at(s, P("/c0"), 0);
+  f.shape = text_at(s, P("/shape"));
+  f.law = text_at(s, P("/law"));
+  f.reference_case = text_at(s, P("/reference_case"));
+  f.sls_reading = text_at(s, P("/conventions/sls_viscosity"));
+  f.rule[0] = stopping_rule(s, "shear");
+  f.rule[1] = stopping_rule(s, "recover");
+  return f;
+}
+
+// Distance between two members' physics: differences of the logarithms of the numbers that
+// set a capsule's relaxation and a fixed step for each differing choice. The weights were read
+// off the shipped results, where they predict the phase ends of one campaign from the others
+// (docs/findings/performance.md "Time estimates against measured runs").
+double PhaseLengths::distance(const Physics& a, const Physics& b) {
+  double d = std::abs(a.log_Ca - b.log_Ca) + std::abs(a.log_V - b.log_V) + std::abs(a.eta - b.eta) +
+             std::abs(a.E_b - b.E_b) + 3.0 * std::abs(a.power_n - b.power_n) + std::abs(a.power_K - b.power_K) +
+             0.3 * std::abs(a.G - b.G) + 0.3 * std::abs(a.c0 - b.c0);
+  if (a.shape != b.shape) d += 0.5;
+  if (a.law != b.law) d += 0.5;
+  if (a.reference_case != b.reference_case) d += 0.5;
+  if (a.sls_reading != b.sls_reading) d += 0.3;
+  return d;
+}
+
 void PhaseLengths::add(const nlohmann::json& scene, double shear_kt, double recover_kt) {
   if (!scene.is_object() || !std::isfinite(shear_kt) || !std::isfinite(recover_kt)) return;
-  records_.push_back({scene, {shear_kt, recover_kt}});
+  records_.push_back({physics_of(scene), {shear_kt, recover_kt}});
 }
 
 PhaseLengths PhaseLengths::from_results(const fs::path& results_dir) {
@@ -90,16 +107,18 @@ std::optional<double> PhaseLengths::expected_kt(const nlohmann::json& scene, boo
   if (!scene.contains(p)) return std::nullopt;
   const std::string until = scene.at(p).value("until", "");
   if (until != "steady" && until != "settled") return std::nullopt;
+  const Physics target = physics_of(scene);
+  const int k = recovery ? 1 : 0;
   std::vector<std::pair<double, double>> near;  // distance, length
   for (const auto& r : records_) {
-    if (r.scene.value("dim", 0) != scene.value("dim", -1) || !same_rule(r.scene, scene, phase)) continue;
-    near.emplace_back(distance(r.scene, scene), std::max(0.1, r.kt[recovery ? 1 : 0]));
+    if (r.physics.dim != target.dim || r.physics.rule[k] != target.rule[k]) continue;
+    near.emplace_back(distance(r.physics, target), std::max(0.1, r.kt[k]));
   }
   if (near.empty()) return std::nullopt;
-  const std::size_t k = std::min<std::size_t>(3, near.size());
-  std::partial_sort(near.begin(), near.begin() + static_cast<long>(k), near.end());
+  const std::size_t n = std::min<std::size_t>(3, near.size());
+  std::partial_sort(near.begin(), near.begin() + static_cast<long>(n), near.end());
   double weight = 0, sum = 0;
-  for (std::size_t i = 0; i < k; ++i) {
+  for (std::size_t i = 0; i < n; ++i) {
     const double w = 1.0 / (0.05 + near[i].first);
     weight += w;
     sum += w * std::log(near[i].second);

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace capsule::study {
@@ -31,10 +32,20 @@ class PhaseLengths {
   std::size_t size() const { return records_.size(); }
 
  private:
+  // A member's physics as the distance reads it, and its stopping rules ("until window
+  // tolerance" of shear and recovery), computed once when the member is added.
+  struct Physics {
+    int dim = 0;
+    double log_Ca = 0, log_V = 0, eta = 0, E_b = 0, power_n = 1, power_K = 0, G = 0, c0 = 0;
+    std::string shape, law, reference_case, sls_reading;
+    std::string rule[2];
+  };
   struct Record {
-    nlohmann::json scene;
+    Physics physics;
     double kt[2];  // shear, recovery
   };
+  static Physics physics_of(const nlohmann::json& scene);
+  static double distance(const Physics& a, const Physics& b);
   std::vector<Record> records_;
 };
 
