@@ -249,6 +249,12 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
     std::string joblog = "+";  // append(): GCC 12 -O3 reports a false -Wrestrict on "literal" + string
     joblog.append(survey.layout.joblog().string());
     std::vector<std::string> argv{"parallel", "--will-cite", "--joblog", joblog};
+    // On a stop (SIGTERM, Ctrl-C) GNU Parallel passes TERM on to each running member, then by
+    // default TERM again after 200 ms, 100 ms and KILL after 50 ms: too soon for a 3D capsule to
+    // finish the restart point the signal asked for (a = 10 writes 150-300 MB), which the KILL
+    // then leaves as a .tmp, losing up to --checkpoint-seconds of work. One TERM, then the
+    // member's own time to write and exit, then KILL only for a member that never ends.
+    argv.insert(argv.end(), {"--termseq", "TERM," + std::to_string(kStopGraceMilliseconds) + ",KILL,25"});
     // With a hosts file, each line's "N/host" says how many members that host takes (GNU
     // Parallel asks a host without N for its cores): no global --jobs unless the user gave -j.
     if (request.hosts_file.empty() || request.jobs > 0) argv.insert(argv.end(), {"--jobs", std::to_string(conc.jobs)});

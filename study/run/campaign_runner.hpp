@@ -41,6 +41,10 @@ struct RunOutcome {
 
 RunOutcome run_campaign(const RunRequest& request, std::ostream& out);
 
+// How long a stopped run (SIGTERM, Ctrl-C) lets each running member write its restart point and
+// exit before GNU Parallel kills it (its --termseq): a 3D member at a = 10 writes 150-300 MB.
+inline constexpr int kStopGraceMilliseconds = 120000;
+
 // The SIGTERM or SIGINT that stopped a run of members (passed on to GNU Parallel), 0 if none:
 // `study run A.json B.json` starts no further campaign after it.
 int stop_signal_received();

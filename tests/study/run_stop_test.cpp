@@ -59,3 +59,46 @@ TEST_CASE("SIGTERM to study run stops it: the campaigns after the running one ar
         MemberState::interrupted);
   fs::remove_all(dir);
 }
+
+TEST_CASE("a stopped member is given time to write its restart point before it is killed", "[study]") {
+  // A stand-in capsule whose restart point takes 2 s to write and which ignores further TERMs
+  // while it writes (as a capsule busy in HDF5 does not stop early). GNU Parallel's default stop
+  // sequence would KILL it 350 ms after the first TERM and the point would be lost.
+  const fs::path dir = testing::scratch_dir("run_stop_grace");
+  testing::write_text(dir / "c.json", testing::tiny_campaign("stop_grace", {0.02}, 30, 0).dump());
+  const fs::path started = dir / "started";
+  const fs::path written = dir / "restart-written";
+  testing::write_text(dir / "slow-capsule",
+                      "#!/bin/sh\n[ \"$1\" = version ] && exec '" + testing::capsule_binary().string() +
+                          "' version\n"
+                          "trap 'trap \"\" TERM; sleep 2; : > \"" + written.string() + "\"; exit 4' TERM\n"
+                          ": > \"" + started.string() + "\"\n"
+                          "while :; do sleep 0.05; done\n");
+  fs::permissions(dir / "slow-capsule", fs::perms::owner_all);
+  const fs::path log = dir / "study.log";
+  const pid_t study = ::fork();
+  if (study == 0) {
+    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(fd, STDOUT_FILENO);
+    ::dup2(fd, STDERR_FILENO);
+    if (::chdir(dir.c_str()) != 0) ::_exit(127);
+    ::setenv("CAPSULE_BIN", (dir / "slow-capsule").c_str(), 1);
+    const std::string bin = testing::study_binary().string();
+    ::execl(bin.c_str(), bin.c_str(), "run", "c.json", "-j", "1", static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  bool running = false;
+  for (int i = 0; i < 3000 && !running; ++i) {  // up to 30 s for GNU Parallel and the stand-in to start
+    running = fs::exists(started);
+    if (!running) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  REQUIRE(running);
+  ::kill(study, SIGTERM);
+  int status = 0;
+  ::waitpid(study, &status, 0);
+  const std::string output = testing::read_text(log);
+  INFO(output);
+  CHECK(fs::exists(written));
+  CHECK_THAT(output, Catch::Contains("stopped by signal 15"));
+  fs::remove_all(dir);
+}
