@@ -53,9 +53,14 @@ std::vector<std::string> members_in_progress(const CampaignSurvey& survey) {
 void prepare_member_directories(const CampaignSurvey& survey) {
   fs::create_directories(survey.layout.members_dir());
   record_campaign(survey.campaign, survey.layout);
-  for (const auto& m : survey.members) {
+  for (std::size_t i = 0; i < survey.members.size(); ++i) {
+    const Member& m = survey.members[i];
     const MemberPaths p = survey.layout.member(m);
     fs::create_directories(p.dir);
+    // A complete member keeps the scene.json it ran with (its member file records the scene
+    // too): a pass over a finished campaign changes no committed file, even where today's
+    // canonical scene spells the same member differently (a key a later version writes).
+    if (survey.conditions[i].state == MemberState::complete && fs::exists(p.scene)) continue;
     const std::string text = m.scene.dump(2) + "\n";
     if (!fs::exists(p.scene) || read_file_text(p.scene) != text) write_file_atomically(p.scene, text);
   }
