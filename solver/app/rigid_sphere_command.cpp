@@ -34,7 +34,7 @@ int rigid_sphere_command(int argc, const char* const* argv) {
   app.add_option("--gain", o.gain, "tether gain: force per unit lag of a marker behind its anchor")
       ->capture_default_str()->check(CLI::Range(1e-5, 1.0));
   app.add_option("--kernel", o.kernel, "IB kernel")->capture_default_str()
-      ->check(CLI::IsMember({"peskin4", "roma3", "linear2", "cosine"}));
+      ->check(CLI::IsMember({"peskin4", "roma3", "linear2", "cosine", "keys4"}));
   app.add_option("--precision", o.precision, "fluid populations")->capture_default_str()->check(CLI::IsMember({"single", "double"}));
   app.add_option("--every", o.every, "series interval in kt")->capture_default_str()->check(CLI::Range(1e-3, 100.0));
   app.add_option("-o,--series", series, "CSV file for the series (kt, torque, stresslet, leakage, lag)");

@@ -46,7 +46,7 @@ struct DeltaStencil1D {
   double w[4] = {0, 0, 0, 0};
 };
 
-enum class Kernel { cosine, peskin4, roma3, linear2 };
+enum class Kernel { cosine, peskin4, roma3, linear2, keys4 };
 
 // The scene's name for a kernel (resolution.kernel); Scene refuses any other name first.
 inline Kernel kernel_from_name(const std::string& name) {
@@ -54,7 +54,8 @@ inline Kernel kernel_from_name(const std::string& name) {
   if (name == "roma3") return Kernel::roma3;
   if (name == "linear2") return Kernel::linear2;
   if (name == "cosine") return Kernel::cosine;
-  throw std::invalid_argument("unknown IB kernel '" + name + "' (allowed: peskin4, roma3, linear2, cosine)");
+  if (name == "keys4") return Kernel::keys4;
+  throw std::invalid_argument("unknown IB kernel '" + name + "' (allowed: peskin4, roma3, linear2, cosine, keys4)");
 }
 
 // Support width in nodes along one axis.
@@ -68,6 +69,21 @@ inline double roma3_delta(double r) {
   const double ar = std::abs(r);
   if (ar <= 0.5) return (1.0 + std::sqrt(1.0 - 3.0 * ar * ar)) / 3.0;
   if (ar <= 1.5) return (5.0 - 3.0 * ar - std::sqrt(std::max(0.0, 1.0 - 3.0 * (1.0 - ar) * (1.0 - ar)))) / 6.0;
+  return 0.0;
+}
+
+// Keys' cubic convolution kernel (R. G. Keys, IEEE Trans. ASSP 29 (1981) 1153, a = -1/2):
+//   (3/2)|r|^3 - (5/2) r^2 + 1                   for |r| <= 1,
+//   -(1/2)|r|^3 + (5/2) r^2 - 4|r| + 2          for 1 <= |r| <= 2.
+// Partition of unity, zero first AND second moment for every offset (it interpolates
+// quadratics exactly), continuous first derivative; negative between |r| = 1 and 2. Peskin's
+// and Roma's kernels are positive, so their second moment cannot vanish (about 1/2 and 1/3
+// node^2, varying with the offset): the smoothing they leave goes as that moment times the
+// curvature of what is smoothed.
+inline double keys4_delta(double r) {
+  const double ar = std::abs(r);
+  if (ar <= 1.0) return (1.5 * ar - 2.5) * ar * ar + 1.0;
+  if (ar <= 2.0) return ((-0.5 * ar + 2.5) * ar - 4.0) * ar + 2.0;
   return 0.0;
 }
 
@@ -106,6 +122,17 @@ inline DeltaStencil1D delta_stencil(double x, Kernel kernel = Kernel::cosine) {
     const double r0 = x - (s.first + 0.5);  // in [0, 1)
     s.w[0] = 1.0 - r0;
     s.w[1] = r0;
+    return s;
+  }
+  if (kernel == Kernel::keys4) {
+    const double r0 = x - (s.first + 0.5);  // in [1, 2): offsets r0, r0 - 1, r0 - 2, r0 - 3
+    const double t = r0 - 1.0;               // in [0, 1)
+    const double u = 1.0 - t;                // 2 - r0, in (0, 1]
+    s.w[1] = (1.5 * t - 2.5) * t * t + 1.0;
+    s.w[2] = (1.5 * u - 2.5) * u * u + 1.0;
+    s.w[0] = ((-0.5 * r0 + 2.5) * r0 - 4.0) * r0 + 2.0;
+    const double r3 = 3.0 - r0;              // in (1, 2]
+    s.w[3] = ((-0.5 * r3 + 2.5) * r3 - 4.0) * r3 + 2.0;
     return s;
   }
   if (kernel == Kernel::peskin4) {

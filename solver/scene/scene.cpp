@@ -295,7 +295,7 @@ Scene Scene::from_json(const json& j, const std::string& source) {
     // 3D: Roma, Peskin and Berger's 3-point kernel by default (physics version 6): with the
     // stresslet's marker inset it has the smaller finite-Ca error of the two measured kernels at
     // 27 nodes a stencil instead of 64 (docs/findings/immersed_boundary_error_budget.md).
-    s.kernel = q.choice("kernel", std::string(s.dim == 3 && !v5 ? "roma3" : "peskin4"), {"peskin4", "roma3", "linear2", "cosine"});
+    s.kernel = q.choice("kernel", std::string(s.dim == 3 && !v5 ? "roma3" : "peskin4"), {"peskin4", "roma3", "linear2", "cosine", "keys4"});
     // The 2D driver's implicit Kelvin-Voigt step uses the self-mobility of peskin4 (simulation2d.cpp).
     if (s.dim == 2 && s.kernel != "peskin4")
       q.fail("kernel", "kernel \"" + s.kernel + "\" is 3D only", "\"peskin4\" in 2D");

@@ -325,6 +325,40 @@ TEST_CASE("narrow kernels roma3 and linear2: closed forms, unity, zero first mom
   REQUIRE_THROWS_AS(kernel_from_name("gauss"), std::invalid_argument);  // no silent fallback
 }
 
+TEST_CASE("keys4: closed form, unity, zero first and second moments", "[ib]") {
+  // Keys' cubic convolution (a = -1/2) interpolates quadratics exactly: its second moment
+  // vanishes for every offset, where a positive kernel's cannot (peskin4 about 1/2, roma3 1/3).
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-50.0, 50.0);
+  for (int t = 0; t < 1000; ++t) {
+    const double x = u(rng);
+    const DeltaStencil1D s = delta_stencil(x, Kernel::keys4);
+    REQUIRE(s.width == 4);
+    double sum = 0, m1 = 0, m2 = 0;
+    for (int m = 0; m < s.width; ++m) {
+      const double r = x - (s.first + m + 0.5);
+      REQUIRE(s.w[m] == Approx(keys4_delta(r)).margin(1e-14));
+      sum += s.w[m];
+      m1 += s.w[m] * r;
+      m2 += s.w[m] * r * r;
+    }
+    REQUIRE(keys4_delta(x - (s.first - 1 + 0.5)) == Approx(0.0).margin(1e-14));
+    REQUIRE(keys4_delta(x - (s.first + 4 + 0.5)) == Approx(0.0).margin(1e-14));
+    REQUIRE(sum == Approx(1.0).margin(1e-13));  // rounding only (offsets up to 50)
+    REQUIRE(m1 == Approx(0.0).margin(1e-12));
+    REQUIRE(m2 == Approx(0.0).margin(1e-11));
+  }
+  // the positive kernels' second moments do not vanish (they vary with the offset)
+  for (Kernel k : {Kernel::peskin4, Kernel::roma3}) {
+    const double x = 3.3;
+    const DeltaStencil1D s = delta_stencil(x, k);
+    double m2 = 0;
+    for (int m = 0; m < s.width; ++m) m2 += s.w[m] * (x - (s.first + m + 0.5)) * (x - (s.first + m + 0.5));
+    CHECK(m2 > 0.25);
+  }
+  REQUIRE(kernel_from_name("keys4") == Kernel::keys4);
+}
+
 TEST_CASE("every kernel interpolates a linear field exactly and spreads adjointly in 3D", "[ib]") {
   const Grid g{16, 14, 12};
   std::vector<double> ux(g.size()), uy(g.size()), uz(g.size());
@@ -342,7 +376,7 @@ TEST_CASE("every kernel interpolates a linear field exactly and spreads adjointl
   const std::size_t n = 20;
   std::vector<double> X(3 * n), U(3 * n), F(3 * n);
   for (std::size_t c = 0; c < 3 * n; ++c) X[c] = p(rng), F[c] = std::sin(double(c));
-  for (Kernel k : {Kernel::peskin4, Kernel::roma3, Kernel::linear2}) {
+  for (Kernel k : {Kernel::peskin4, Kernel::roma3, Kernel::linear2, Kernel::keys4}) {
     interpolate<3>(g, u, X.data(), n, U.data(), k);
     for (std::size_t c = 0; c < n; ++c) {
       REQUIRE(U[3 * c] == Approx(0.2 + 0.01 * X[3 * c + 1]).margin(1e-14));  // rounding only
@@ -376,7 +410,7 @@ TEST_CASE("the spreading box spreads as spread<3> and clears exactly what it wro
     X[3 * c + 2] = 14.0 + around(rng);  // both sides of z = nz
     for (int d = 0; d < 3; ++d) F[3 * c + d] = std::cos(double(3 * c + d));
   }
-  for (Kernel k : {Kernel::peskin4, Kernel::roma3, Kernel::linear2}) {
+  for (Kernel k : {Kernel::peskin4, Kernel::roma3, Kernel::linear2, Kernel::keys4}) {
     std::vector<double> a0(g.size(), 7.0), a1(g.size(), 7.0), a2(g.size(), 7.0);
     std::vector<double> b0(g.size()), b1(g.size()), b2(g.size());
     double* p[3] = {a0.data(), a1.data(), a2.data()};
