@@ -9,6 +9,8 @@
 //   d_S(r) = c0 + c1 / r
 //   peskin4: c0 = 0.454, c1 = 1.32   (r = 4 and 10; reproduces r = 5 and 7 within 0.005)
 //   roma3:   c0 = 0.343, c1 = 0.82   (r = 4.4, 5, 6.5 and 7; within 0.001 of all four)
+//   keys4:   c0 = 0.101, c1 = 0.662  (r = 4.4, 5 and 7, a least-squares line; within 0.002 of all
+//            three; Keys' kernel, whose zero second moment smears the shell by a third as much)
 // A capsule deforms as a sphere of the stresslet's radius (its small-Ca D/Ca read as a radius
 // is a_S within a tenth of a node), so its markers go on the radius r_m that the flow sees as a:
 //   r_m + d_S(r_m) = a   =>   r_m = ((a - c0) + sqrt((a - c0)^2 - 4 c1)) / 2,
@@ -29,6 +31,7 @@ struct StressletRadiusGap {
 inline std::optional<StressletRadiusGap> stresslet_radius_gap(const std::string& kernel) {
   if (kernel == "peskin4") return StressletRadiusGap{0.454, 1.32};
   if (kernel == "roma3") return StressletRadiusGap{0.343, 0.82};
+  if (kernel == "keys4") return StressletRadiusGap{0.101, 0.662};
   return std::nullopt;
 }
 

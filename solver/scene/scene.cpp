@@ -313,7 +313,7 @@ Scene Scene::from_json(const json& j, const std::string& source) {
     // markers': capsule rigid-sphere, docs/findings/immersed_boundary_error_budget.md).
     // 3D default "stresslet": the inset at which a rigid shell of markers exerts the stresslet of
     // a sphere of radius a (solver/ib/hydrodynamic_radius.hpp); a number sets it in lattice units.
-    // By default only where the kernel's shell was measured (peskin4, roma3); elsewhere 0.
+    // By default only where the kernel's shell was measured (peskin4, roma3, keys4); elsewhere 0.
     s.marker_inset_rule = s.dim == 3 && !v5 && ib::stresslet_radius_gap(s.kernel) ? "stresslet" : "";
     s.marker_inset = 0.0;
     if (q.has("marker_inset")) {
@@ -333,7 +333,7 @@ Scene Scene::from_json(const json& j, const std::string& source) {
     if (s.marker_inset_rule == "stresslet") {
       const auto gap = ib::stresslet_radius_gap(s.kernel);
       if (!gap)
-        q.fail("marker_inset", "the stresslet's inset is measured for the kernels peskin4 and roma3, not \"" + s.kernel + "\"",
+        q.fail("marker_inset", "the stresslet's inset is measured for the kernels peskin4, roma3 and keys4, not \"" + s.kernel + "\"",
                "a number in [0, 2] with kernel \"" + s.kernel + "\"");
       s.marker_inset = ib::stresslet_marker_inset(*gap, s.a);
       if (!(s.marker_inset >= 0.0))

@@ -11,12 +11,14 @@ using namespace capsule::ib;
 TEST_CASE("the stresslet's marker inset puts the shell's hydrodynamic radius on a", "[ib]") {
   const auto roma3 = stresslet_radius_gap("roma3");
   const auto peskin4 = stresslet_radius_gap("peskin4");
+  const auto keys4 = stresslet_radius_gap("keys4");
   REQUIRE(roma3);
   REQUIRE(peskin4);
+  REQUIRE(keys4);
   CHECK_FALSE(stresslet_radius_gap("cosine"));
   CHECK_FALSE(stresslet_radius_gap("linear2"));
   for (double a : {3.0, 5.0, 7.0, 10.0, 14.0, 40.0}) {
-    for (const auto& g : {*roma3, *peskin4}) {
+    for (const auto& g : {*roma3, *peskin4, *keys4}) {
       const double inset = stresslet_marker_inset(g, a);
       const double r = a - inset;
       // The defining equation, to round-off.
@@ -34,6 +36,8 @@ TEST_CASE("the stresslet's marker inset puts the shell's hydrodynamic radius on 
   CHECK(stresslet_marker_inset(*peskin4, 5) == Approx(0.766).margin(0.005));
   CHECK(stresslet_marker_inset(*peskin4, 7) == Approx(0.66).margin(0.005));
   CHECK(stresslet_marker_inset(*peskin4, 10) == Approx(0.59).margin(0.005));
+  CHECK(stresslet_marker_inset(*keys4, 7) == Approx(0.20).margin(0.005));
+  CHECK(stresslet_marker_inset(*keys4, 10) == Approx(0.17).margin(0.005));
   // Below the smallest radius there is no root.
   CHECK(std::isnan(stresslet_marker_inset(*roma3, 0.9 * stresslet_inset_min_radius(*roma3))));
   CHECK_FALSE(std::isnan(stresslet_marker_inset(*roma3, stresslet_inset_min_radius(*roma3))));

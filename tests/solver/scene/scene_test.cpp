@@ -153,7 +153,7 @@ TEST_CASE("resolution.marker_inset: the stresslet's rule by default in 3D (0 in 
   CHECK(Scene::from_json(j3, "t.json").to_json()["resolution"]["marker_inset"] == 0.0);
   j3["resolution"] = {{"kernel", "linear2"}, {"marker_inset", "stresslet"}};
   CHECK_THROWS_WITH(Scene::from_json(j3, "t.json"),
-                    Catch::Contains("resolution.marker_inset") && Catch::Contains("peskin4 and roma3"));
+                    Catch::Contains("resolution.marker_inset") && Catch::Contains("peskin4, roma3 and keys4"));
   // Below the smallest radius the rule has no solution: the scene says where it has one.
   j3["resolution"] = {{"a", 2.0}};
   CHECK_THROWS_WITH(Scene::from_json(j3, "t.json"), Catch::Contains("resolution.marker_inset") && Catch::Contains("a >= 2.15"));
@@ -320,7 +320,7 @@ TEST_CASE("bad scenes are refused with the file, the key and the allowed range",
       {"domain length", [](json& j) { j["resolution"] = {{"domain", {16, 12, 8}}}; }, "resolution.domain: expected 2..2 entries"},
       {"case on a 2D scene", [](json& j) { j["reference_case"] = "A"; }, "reference_case: unknown value"},
       {"unknown kernel", [](json& j) { j["resolution"] = {{"kernel", "gauss"}}; },
-       "resolution.kernel: unknown value \"gauss\" (allowed: peskin4 | roma3 | linear2 | cosine)"},
+       "resolution.kernel: unknown value \"gauss\" (allowed: peskin4 | roma3 | linear2 | cosine | keys4)"},
       {"3D-only kernel in 2D", [](json& j) { j["resolution"] = {{"kernel", "roma3"}}; },
        "resolution.kernel: kernel \"roma3\" is 3D only (allowed: \"peskin4\" in 2D)"},
       {"SLS convention in 2D", [](json& j) { j["conventions"] = {{"sls_viscosity", "dissertation"}}; },
