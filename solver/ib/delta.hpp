@@ -80,6 +80,11 @@ inline double roma3_delta(double r) {
 // and Roma's kernels are positive, so their second moment cannot vanish (about 1/2 and 1/3
 // node^2, varying with the offset): the smoothing they leave goes as that moment times the
 // curvature of what is smoothed.
+// Measured (docs/findings/immersed_boundary_error_budget.md
+// "A kernel with zero second moment: removes the smoothing error, not stable (2026-12-06)"):
+// it removes the finite-Ca deficit (Ca 0.2, a = 10: -0.5 % against roma3's -2.5 %), but a
+// stiff membrane's deformation creeps at any tau and the volume leaks about 8x faster: a
+// probe, not a default.
 inline double keys4_delta(double r) {
   const double ar = std::abs(r);
   if (ar <= 1.0) return (1.5 * ar - 2.5) * ar * ar + 1.0;
