@@ -191,6 +191,13 @@ TEST_CASE("Thesis document: figures.md and the causes' Claims: lines name claims
     for (const auto& key : f.claims) CHECK(keys.count(key) == 1);
     for (const auto& file : f.files) {
       INFO(file);
+      // A campaign being rerun ships its report with INCOMPLETE.md (`study report` on an
+      // unfinished campaign): its figures of members not yet run are missing until they run.
+      const fs::path campaign_report = k_shipped_results / fs::path(file).begin()->string() / "report";
+      if (!fs::is_regular_file(k_shipped_results / file) && fs::is_regular_file(campaign_report / "INCOMPLETE.md")) {
+        WARN("Fig. " << f.number << ": " << file << " awaits its campaign's members (report INCOMPLETE.md)");
+        continue;
+      }
       CHECK(fs::is_regular_file(k_shipped_results / file));
     }
   }
