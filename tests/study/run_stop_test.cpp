@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <thread>
+#include <vector>
 
 #include "study/state/campaign_survey.hpp"
 #include "study/state/exit_status.hpp"
@@ -17,23 +18,40 @@
 using namespace capsule::study;
 namespace fs = std::filesystem;
 
-TEST_CASE("SIGTERM to study run stops it: the campaigns after the running one are not started", "[study]") {
-  const fs::path dir = testing::scratch_dir("run_stop");
-  // The first member runs for many seconds (kt 30 at about 0.25 s per kt), so the signal finds it running.
-  testing::write_text(dir / "first.json", testing::tiny_campaign("stop_first", {0.02}, 30, 0).dump());
-  testing::write_text(dir / "second.json", testing::tiny_campaign("stop_second", {0.02}, 0.3, 0).dump());
-  const fs::path log = dir / "study.log";
+namespace {
+
+// `study run ARGS...` started in `dir` with CAPSULE_BIN = `capsule`, its output into `log`;
+// returns its pid, for the test to signal and wait for.
+pid_t start_study_run(const fs::path& dir, const fs::path& log, const fs::path& capsule,
+                      const std::vector<std::string>& args) {
   const pid_t study = ::fork();
   if (study == 0) {
     const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     ::dup2(fd, STDOUT_FILENO);
     ::dup2(fd, STDERR_FILENO);
     if (::chdir(dir.c_str()) != 0) ::_exit(127);
-    ::setenv("CAPSULE_BIN", testing::capsule_binary().c_str(), 1);
+    ::setenv("CAPSULE_BIN", capsule.c_str(), 1);
     const std::string bin = testing::study_binary().string();
-    ::execl(bin.c_str(), bin.c_str(), "run", "first.json", "second.json", "-j", "1", static_cast<char*>(nullptr));
+    std::vector<std::string> words{bin, "run"};
+    words.insert(words.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (auto& w : words) argv.push_back(w.data());
+    argv.push_back(nullptr);
+    ::execv(bin.c_str(), argv.data());
     ::_exit(127);
   }
+  return study;
+}
+
+}  // namespace
+
+TEST_CASE("SIGTERM to study run stops it: the campaigns after the running one are not started", "[study]") {
+  const fs::path dir = testing::scratch_dir("run_stop");
+  // The first member runs for many seconds (kt 30 at about 0.25 s per kt), so the signal finds it running.
+  testing::write_text(dir / "first.json", testing::tiny_campaign("stop_first", {0.02}, 30, 0).dump());
+  testing::write_text(dir / "second.json", testing::tiny_campaign("stop_second", {0.02}, 0.3, 0).dump());
+  const fs::path log = dir / "study.log";
+  const pid_t study = start_study_run(dir, log, testing::capsule_binary(), {"first.json", "second.json", "-j", "1"});
   const CampaignSurvey first = survey_campaign((dir / "first.json").string(), dir / "results");
   const MemberPaths p = first.layout.member(first.members[0]);
   bool running = false;
@@ -76,17 +94,7 @@ TEST_CASE("a stopped member is given time to write its restart point before it i
                           "while :; do sleep 0.05; done\n");
   fs::permissions(dir / "slow-capsule", fs::perms::owner_all);
   const fs::path log = dir / "study.log";
-  const pid_t study = ::fork();
-  if (study == 0) {
-    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    ::dup2(fd, STDOUT_FILENO);
-    ::dup2(fd, STDERR_FILENO);
-    if (::chdir(dir.c_str()) != 0) ::_exit(127);
-    ::setenv("CAPSULE_BIN", (dir / "slow-capsule").c_str(), 1);
-    const std::string bin = testing::study_binary().string();
-    ::execl(bin.c_str(), bin.c_str(), "run", "c.json", "-j", "1", static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
+  const pid_t study = start_study_run(dir, log, dir / "slow-capsule", {"c.json", "-j", "1"});
   bool running = false;
   for (int i = 0; i < 3000 && !running; ++i) {  // up to 30 s for GNU Parallel and the stand-in to start
     running = fs::exists(started);
