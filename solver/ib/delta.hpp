@@ -28,6 +28,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace capsule::ib {
 
@@ -110,26 +111,26 @@ inline int stencil_first(double x, Kernel kernel) {
   return static_cast<int>(std::floor(x - 0.5)) - 1;  // peskin4 and cosine
 }
 
-inline DeltaStencil1D delta_stencil(double x, Kernel kernel = Kernel::cosine) {
+// The stencil of the kernel K, chosen at compile time: the hot loops (interpolation.hpp,
+// layer_spreading.hpp) are instantiated once per kernel through with_kernel(), so the width is
+// a constant and their loops unroll. The same arithmetic as delta_stencil(x, K), bit for bit.
+template <Kernel K>
+inline DeltaStencil1D delta_stencil_of(double x) {
   DeltaStencil1D s;
-  s.width = kernel_width(kernel);
-  s.first = stencil_first(x, kernel);
-  if (kernel == Kernel::roma3) {
+  s.width = kernel_width(K);
+  s.first = stencil_first(x, K);
+  if constexpr (K == Kernel::roma3) {
     const double r1 = x - (s.first + 1.5);          // offset from the middle node, in [-1/2, 1/2)
     s.w[1] = (1.0 + std::sqrt(std::max(0.0, 1.0 - 3.0 * r1 * r1))) / 3.0;
     // the outer two follow from partition of unity and zero first moment: w0 - w2 = -r1
     const double outer = 1.0 - s.w[1];
     s.w[0] = 0.5 * (outer - r1);
     s.w[2] = 0.5 * (outer + r1);
-    return s;
-  }
-  if (kernel == Kernel::linear2) {
+  } else if constexpr (K == Kernel::linear2) {
     const double r0 = x - (s.first + 0.5);  // in [0, 1)
     s.w[0] = 1.0 - r0;
     s.w[1] = r0;
-    return s;
-  }
-  if (kernel == Kernel::keys4) {
+  } else if constexpr (K == Kernel::keys4) {
     const double r0 = x - (s.first + 0.5);  // in [1, 2): offsets r0, r0 - 1, r0 - 2, r0 - 3
     const double t = r0 - 1.0;               // in [0, 1)
     const double u = 1.0 - t;                // 2 - r0, in (0, 1]
@@ -138,9 +139,7 @@ inline DeltaStencil1D delta_stencil(double x, Kernel kernel = Kernel::cosine) {
     s.w[0] = ((-0.5 * r0 + 2.5) * r0 - 4.0) * r0 + 2.0;
     const double r3 = 3.0 - r0;              // in (1, 2]
     s.w[3] = ((-0.5 * r3 + 2.5) * r3 - 4.0) * r3 + 2.0;
-    return s;
-  }
-  if (kernel == Kernel::peskin4) {
+  } else if constexpr (K == Kernel::peskin4) {
     const double r0 = x - (s.first + 0.5);  // in [1, 2): offsets r0, r0 - 1 in [0, 1), r0 - 2, r0 - 3
     const double r1 = r0 - 1.0;             // in [0, 1)
     // one square root serves the two inner nodes and one the two outer nodes
@@ -149,18 +148,36 @@ inline DeltaStencil1D delta_stencil(double x, Kernel kernel = Kernel::cosine) {
     s.w[2] = 0.125 * (1.0 + 2.0 * r1 + q);  // phi(1 - r1)
     s.w[0] = 0.5 - s.w[2];                  // phi(r) + phi(r - 2) = 1/2 (even/odd sums)
     s.w[3] = 0.5 - s.w[1];
-    return s;
+  } else {
+    // cosine (18). r_m = x - (first + m + 1/2): r_0 in [1, 2), r_m = r_0 - m. cos(pi (r - m)/2)
+    // cycles through c, s, -c, -s with c = cos(pi r_0 / 2), s = sin(pi r_0 / 2): one cos and one sin.
+    const double r0 = x - (s.first + 0.5);
+    const double c = std::cos(0.5 * std::numbers::pi * r0);
+    const double sn = std::sin(0.5 * std::numbers::pi * r0);
+    s.w[0] = 0.25 * (1.0 + c);
+    s.w[1] = 0.25 * (1.0 + sn);
+    s.w[2] = 0.25 * (1.0 - c);
+    s.w[3] = 0.25 * (1.0 - sn);
   }
-  // r_m = x - (first + m + 1/2): r_0 in [1, 2), r_m = r_0 - m. cos(pi (r - m)/2) cycles
-  // through c, s, -c, -s with c = cos(pi r_0 / 2), s = sin(pi r_0 / 2): one cos and one sin.
-  const double r0 = x - (s.first + 0.5);
-  const double c = std::cos(0.5 * std::numbers::pi * r0);
-  const double sn = std::sin(0.5 * std::numbers::pi * r0);
-  s.w[0] = 0.25 * (1.0 + c);
-  s.w[1] = 0.25 * (1.0 + sn);
-  s.w[2] = 0.25 * (1.0 - c);
-  s.w[3] = 0.25 * (1.0 - sn);
   return s;
+}
+
+// Calls f(std::integral_constant<Kernel, K>{}) for the kernel named at run time: a loop over
+// membrane nodes placed inside f is compiled once per kernel, with no branch on the kernel inside.
+template <class F>
+inline decltype(auto) with_kernel(Kernel kernel, F&& f) {
+  switch (kernel) {
+    case Kernel::roma3: return f(std::integral_constant<Kernel, Kernel::roma3>{});
+    case Kernel::peskin4: return f(std::integral_constant<Kernel, Kernel::peskin4>{});
+    case Kernel::linear2: return f(std::integral_constant<Kernel, Kernel::linear2>{});
+    case Kernel::keys4: return f(std::integral_constant<Kernel, Kernel::keys4>{});
+    case Kernel::cosine: break;
+  }
+  return f(std::integral_constant<Kernel, Kernel::cosine>{});
+}
+
+inline DeltaStencil1D delta_stencil(double x, Kernel kernel = Kernel::cosine) {
+  return with_kernel(kernel, [x](auto k) { return delta_stencil_of<decltype(k)::value>(x); });
 }
 
 // The kernel's first moment sum_m (x - x_m) w_m for a point whose first stencil node

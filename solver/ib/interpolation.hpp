@@ -24,14 +24,15 @@
 namespace capsule::ib {
 
 // Calls visit(lattice_index, weight) for every lattice node in the support of the
-// delta centred at X (Dim coordinates), with walls and periodicity applied.
-template <int Dim, class Visit>
-inline void for_each_support_node(const Grid& grid, const double* X, Kernel kernel, Visit&& visit) {
+// delta centred at X (Dim coordinates), with walls and periodicity applied; the kernel K fixed
+// at compile time (its width a constant, the loops unrolled).
+template <int Dim, Kernel K, class Visit>
+inline void for_each_support_node_of(const Grid& grid, const double* X, Visit&& visit) {
   static_assert(Dim == 2 || Dim == 3, "2D or 3D");
-  const DeltaStencil1D sx = delta_stencil(X[0], kernel);
-  const DeltaStencil1D sy = delta_stencil(X[1], kernel);
-  const int width = sx.width;
-  int ix[4];
+  constexpr int width = kernel_width(K);
+  const DeltaStencil1D sx = delta_stencil_of<K>(X[0]);
+  const DeltaStencil1D sy = delta_stencil_of<K>(X[1]);
+  int ix[width];
   for (int m = 0; m < width; ++m) ix[m] = wrap(sx.first + m, grid.nx);
   if constexpr (Dim == 2) {
     for (int b = 0; b < width; ++b) {
@@ -41,7 +42,7 @@ inline void for_each_support_node(const Grid& grid, const double* X, Kernel kern
       for (int m = 0; m < width; ++m) visit(row + ix[m], sx.w[m] * sy.w[b]);
     }
   } else {
-    const DeltaStencil1D sz = delta_stencil(X[2], kernel);
+    const DeltaStencil1D sz = delta_stencil_of<K>(X[2]);
     for (int c = 0; c < width; ++c) {
       const int k = wrap(sz.first + c, grid.nz);
       for (int b = 0; b < width; ++b) {
@@ -55,20 +56,30 @@ inline void for_each_support_node(const Grid& grid, const double* X, Kernel kern
   }
 }
 
+// The same for a kernel named at run time (one node; loops over many nodes call with_kernel
+// once outside the loop instead).
+template <int Dim, class Visit>
+inline void for_each_support_node(const Grid& grid, const double* X, Kernel kernel, Visit&& visit) {
+  with_kernel(kernel, [&](auto k) { for_each_support_node_of<Dim, decltype(k)::value>(grid, X, visit); });
+}
+
 // (19): velocity of n membrane nodes from the lattice velocity u[0..Dim-1].
 template <int Dim>
 void interpolate(const Grid& grid, const double* const* u, const double* X, std::size_t n, double* U,
                  Kernel kernel = Kernel::cosine) {
-  // Each node sums its own support in a fixed order: threads do not change the result. From
-  // ~2000 nodes (a 3D mesh at level 4); a 2D membrane's 140 segments stay on one thread.
+  with_kernel(kernel, [&](auto k) {
+    constexpr Kernel K = decltype(k)::value;
+    // Each node sums its own support in a fixed order: threads do not change the result. From
+    // ~2000 nodes (a 3D mesh at level 4); a 2D membrane's 140 segments stay on one thread.
 #pragma omp parallel for schedule(static) if (n > 2048)
-  for (std::size_t c = 0; c < n; ++c) {
-    double acc[Dim] = {};
-    for_each_support_node<Dim>(grid, X + Dim * c, kernel, [&](std::size_t node, double w) {
-      for (int d = 0; d < Dim; ++d) acc[d] += w * u[d][node];
-    });
-    for (int d = 0; d < Dim; ++d) U[Dim * c + d] = acc[d];
-  }
+    for (std::size_t c = 0; c < n; ++c) {
+      double acc[Dim] = {};
+      for_each_support_node_of<Dim, K>(grid, X + Dim * c, [&](std::size_t node, double w) {
+        for (int d = 0; d < Dim; ++d) acc[d] += w * u[d][node];
+      });
+      for (int d = 0; d < Dim; ++d) U[Dim * c + d] = acc[d];
+    }
+  });
 }
 
 // (20): forward Euler position update.
@@ -82,12 +93,14 @@ void advance(double* X, const double* U, std::size_t n, double dt) {
 template <int Dim>
 void spread(const Grid& grid, const double* X, const double* P, std::size_t n, double* const* p,
             Kernel kernel = Kernel::cosine) {
-  for (std::size_t c = 0; c < n; ++c) {
-    const double* Pc = P + Dim * c;
-    for_each_support_node<Dim>(grid, X + Dim * c, kernel, [&](std::size_t node, double w) {
-      for (int d = 0; d < Dim; ++d) p[d][node] += w * Pc[d];
-    });
-  }
+  with_kernel(kernel, [&](auto k) {
+    for (std::size_t c = 0; c < n; ++c) {
+      const double* Pc = P + Dim * c;
+      for_each_support_node_of<Dim, decltype(k)::value>(grid, X + Dim * c, [&](std::size_t node, double w) {
+        for (int d = 0; d < Dim; ++d) p[d][node] += w * Pc[d];
+      });
+    }
+  });
 }
 
 // Sets p to zero on the support of the nodes X: undoes a spread() from the same positions

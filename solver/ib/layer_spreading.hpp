@@ -22,26 +22,28 @@ struct LayerArc {
   bool holds(int k, int nz) const { return wrap(k - first, nz) < count; }
 };
 
-// p[d] += delta(X_c - x) P_c[d] (21) for the lattice nodes x in the layers of `arc` (3D).
-// The same walls, periodicity and products as for_each_support_node<3> and spread<3>.
-inline void spread_in_layers(const Grid& grid, const double* X, const double* P, std::size_t n, double* const* p,
-                             Kernel kernel, LayerArc arc) {
-  const int width = kernel_width(kernel);
+// p[d] += delta(X_c - x) P_c[d] (21) for the lattice nodes x in the layers of `arc` (3D), the
+// kernel K fixed at compile time. The same walls, periodicity and products as
+// for_each_support_node<3> and spread<3>.
+template <Kernel K>
+inline void spread_in_layers_of(const Grid& grid, const double* X, const double* P, std::size_t n, double* const* p,
+                                LayerArc arc) {
+  constexpr int width = kernel_width(K);
   double* const p0 = p[0];
   double* const p1 = p[1];
   double* const p2 = p[2];
   for (std::size_t c = 0; c < n; ++c) {
     const double* Xc = X + 3 * c;
-    const int z_first = stencil_first(Xc[2], kernel);
-    bool held[4] = {false, false, false, false};
+    const int z_first = stencil_first(Xc[2], K);
+    bool held[width];
     bool any = false;
     for (int l = 0; l < width; ++l) any |= held[l] = arc.holds(wrap(z_first + l, grid.nz), grid.nz);
     if (!any) continue;
-    const DeltaStencil1D sx = delta_stencil(Xc[0], kernel);
-    const DeltaStencil1D sy = delta_stencil(Xc[1], kernel);
-    const DeltaStencil1D sz = delta_stencil(Xc[2], kernel);
+    const DeltaStencil1D sx = delta_stencil_of<K>(Xc[0]);
+    const DeltaStencil1D sy = delta_stencil_of<K>(Xc[1]);
+    const DeltaStencil1D sz = delta_stencil_of<K>(Xc[2]);
     const double Px = P[3 * c], Py = P[3 * c + 1], Pz = P[3 * c + 2];
-    int ix[4];
+    int ix[width];
     for (int m = 0; m < width; ++m) ix[m] = wrap(sx.first + m, grid.nx);
     for (int l = 0; l < width; ++l) {
       if (!held[l]) continue;
@@ -61,6 +63,12 @@ inline void spread_in_layers(const Grid& grid, const double* X, const double* P,
       }
     }
   }
+}
+
+// The same for a kernel named at run time.
+inline void spread_in_layers(const Grid& grid, const double* X, const double* P, std::size_t n, double* const* p,
+                             Kernel kernel, LayerArc arc) {
+  with_kernel(kernel, [&](auto k) { spread_in_layers_of<decltype(k)::value>(grid, X, P, n, p, arc); });
 }
 
 }  // namespace capsule::ib
