@@ -113,7 +113,7 @@ inline int stencil_first(double x, Kernel kernel) {
 
 // The stencil of the kernel K, chosen at compile time: the hot loops (interpolation.hpp,
 // layer_spreading.hpp) are instantiated once per kernel through with_kernel(), so the width is
-// a constant and their loops unroll. The same arithmetic as delta_stencil(x, K), bit for bit.
+// a constant and their loops unroll. delta_stencil(x, kernel) picks it at run time.
 template <Kernel K>
 inline DeltaStencil1D delta_stencil_of(double x) {
   DeltaStencil1D s;

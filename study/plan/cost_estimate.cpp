@@ -117,9 +117,12 @@ void SpeedCalibration::add(const CostEstimate& c, double steps, int threads, dou
   }
 }
 
+double SpeedCalibration::expected_steps(const CostEstimate& c) const {
+  return c.kt_is_bound ? std::min(c.steps(), c.expected_steps() * length_factor) : c.expected_steps();
+}
+
 double SpeedCalibration::seconds(const CostEstimate& c, int threads) const {
-  const double steps = c.kt_is_bound ? std::min(c.steps(), c.expected_steps() * length_factor) : c.expected_steps();
-  return c.seconds_for_steps(steps, threads) * factor;
+  return c.seconds_for_steps(expected_steps(c), threads) * factor;
 }
 
 }  // namespace capsule::study

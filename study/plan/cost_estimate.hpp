@@ -54,8 +54,10 @@ struct SpeedCalibration {
   double length_factor = 1.0;
   int length_members = 0;
   void add(const CostEstimate& c, double steps, int threads, double wall_seconds);
-  // Seconds for a member that has not run: its expected steps (corrected by length_factor,
-  // never beyond its caps) at the model's speed corrected by factor.
+  // A member's expected steps, those of a phase that ends on a condition corrected by
+  // length_factor, never beyond its caps.
+  double expected_steps(const CostEstimate& c) const;
+  // Seconds for a member that has not run: its expected steps at the model's speed corrected by factor.
   double seconds(const CostEstimate& c, int threads) const;
 
  private:

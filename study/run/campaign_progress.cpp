@@ -16,13 +16,12 @@ double now_seconds() {
 }
 }  // namespace
 
-double running_member_seconds_left(const MemberProgress& progress, const CostEstimate& cost, double length_factor,
-                                   double fallback) {
+double running_member_seconds_left(const MemberProgress& progress, const CostEstimate& cost,
+                                   const SpeedCalibration& speed, double fallback) {
   const double own = progress.eta_member_seconds >= 0 ? progress.eta_member_seconds : fallback;
   if (!progress.member_end_is_cap || progress.steps_per_second <= 0 || cost.steps_per_kt <= 0) return own;
-  const double expected_kt = std::min(cost.kt_span, cost.expected_kt * length_factor);
-  const double left_kt = std::max(0.0, expected_kt - progress.kt);
-  return std::min(own, left_kt * cost.steps_per_kt / progress.steps_per_second);
+  const double steps_left = std::max(0.0, speed.expected_steps(cost) - progress.kt * cost.steps_per_kt);
+  return std::min(own, steps_left / progress.steps_per_second);
 }
 
 CampaignProgress::CampaignProgress(const CampaignSurvey& survey, std::vector<std::size_t> to_run, int jobs, int threads,
@@ -50,7 +49,7 @@ CampaignProgress::Counts CampaignProgress::count() {
     if (cond.state == MemberState::running) {
       ++c.running;
       const double eta =
-          running_member_seconds_left(cond.progress, cost_[k], speed_.for_dim(dim).length_factor, estimate);
+          running_member_seconds_left(cond.progress, cost_[k], speed_.for_dim(dim), estimate);
       remaining += eta;
       longest = std::max(longest, eta);
     } else {

@@ -19,10 +19,10 @@ namespace capsule::study {
 // that ends on a condition: steady shear, settled recovery), which is an upper bound, often
 // several times the real end (a recovery capped at kt 56 that settles near kt 9): then the
 // member's expected end (the cost model's, corrected by the phase lengths measured so far:
-// SpeedCalibration::length_factor), at the member's own measured speed, never beyond its cap.
+// SpeedCalibration::expected_steps), at the member's own measured speed, never beyond its cap.
 // `fallback` (the model's seconds) where the member has not measured its speed yet.
-double running_member_seconds_left(const MemberProgress& progress, const CostEstimate& cost, double length_factor,
-                                   double fallback);
+double running_member_seconds_left(const MemberProgress& progress, const CostEstimate& cost,
+                                   const SpeedCalibration& speed, double fallback);
 
 class CampaignProgress {
  public:
