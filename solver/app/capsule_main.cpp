@@ -25,7 +25,7 @@ const char* const exit_codes =
 
 int main(int argc, char** argv) {
   // `capsule SCENE -o OUT` is the common form; subcommands `check`, `bench` and
-  // `reference-bim` and `rigid-sphere` sit beside it.
+  // `reference-bim`, `rigid-sphere` and `rigid-circle` sit beside it.
   if (argc >= 2 && std::string(argv[1]) == "check") {
     CLI::App app{"capsule check: validate a scene and print it with every default filled in"};
     app.footer(exit_codes);
@@ -59,6 +59,7 @@ int main(int argc, char** argv) {
   }
   if (argc >= 2 && std::string(argv[1]) == "reference-bim") return capsule::cli::reference_bim_command(argc - 1, argv + 1);
   if (argc >= 2 && std::string(argv[1]) == "rigid-sphere") return capsule::cli::rigid_sphere_command(argc - 1, argv + 1);
+  if (argc >= 2 && std::string(argv[1]) == "rigid-circle") return capsule::cli::rigid_circle_command(argc - 1, argv + 1);
   if (argc >= 2 && std::string(argv[1]) == "bench") {
     CLI::App app{"capsule bench: performance benchmarks"};
     app.footer("Exit status: 0 done, 1 failure, 2 bad command line.");
@@ -90,7 +91,8 @@ int main(int argc, char** argv) {
                "  capsule bench lbm                 fluid benchmark\n"
                "  capsule bench member3d            3D step benchmark, by part\n"
                "  capsule reference-bim --ca CA     boundary-integral reference capsule\n"
-               "  capsule rigid-sphere --a A        rigid IB shell: torque and stresslet against Stokes"};
+               "  capsule rigid-sphere --a A        rigid IB shell: torque and stresslet against Stokes\n"
+               "  capsule rigid-circle --a A        rigid IB circle (2D): torque and stresslet against Stokes"};
   app.footer(exit_codes);
   capsule::RunOptions opt;
   app.add_option("scene", opt.scene_path, "scene JSON file")->required()->check(CLI::ExistingFile);

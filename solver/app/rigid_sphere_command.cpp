@@ -1,5 +1,6 @@
-// `capsule rigid-sphere`: a rigid shell of immersed-boundary markers in the lattice shear
-// flow, its torque and stresslet against the exact Stokes values (solver/rigid_sphere/).
+// `capsule rigid-sphere` and `capsule rigid-circle`: a rigid shell (3D) or circle (2D) of
+// immersed-boundary markers in the lattice shear flow, its torque and stresslet against the exact
+// Stokes values (solver/rigid_sphere/).
 #include "solver/app/rigid_sphere_command.hpp"
 
 #include <CLI/CLI.hpp>
@@ -7,11 +8,43 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 
 #include "solver/app/cli_support.hpp"
+#include "solver/rigid_sphere/rigid_circle.hpp"
 #include "solver/rigid_sphere/rigid_shell.hpp"
 
 namespace capsule::cli {
+
+namespace {
+
+// The series CSV (written under a temporary name, then renamed) and the summary row: the run's
+// settings (columns, values), then the last row and the change over the last kt against the row
+// one kt before it.
+void write_result(const rigid_sphere::RigidShellResult& r, const std::string& series, const std::string& columns,
+                  const std::string& values) {
+  if (!series.empty()) {
+    const std::filesystem::path path(series), tmp(series + ".part");
+    {
+      std::ofstream out(tmp);
+      rigid_sphere::write_series_csv(r, out);
+      if (!out) throw std::runtime_error("cannot write " + tmp.string());
+    }
+    std::filesystem::rename(tmp, path);
+  }
+  const auto& last = r.series.back();
+  const rigid_sphere::RigidShellRow* before = &r.series.front();
+  for (const auto& row : r.series)
+    if (row.kt <= last.kt - 1.0 + 1e-9) before = &row;
+  std::cout << columns << ",kt,torque,torque_exact,torque_change,stresslet,stresslet_change,leakage,lag,steps,seconds\n";
+  std::cout.precision(7);
+  std::cout << values << "," << last.kt << "," << last.torque
+            << "," << r.torque_exact << "," << last.torque - before->torque << "," << last.stresslet << ","
+            << last.stresslet - before->stresslet << "," << last.leakage << "," << last.lag << "," << r.steps << ","
+            << r.seconds << "\n";
+}
+
+}  // namespace
 
 int rigid_sphere_command(int argc, const char* const* argv) {
   CLI::App app{"capsule rigid-sphere: a rigid spherical shell of IB markers in the capsule's shear box (no membrane\n"
@@ -48,31 +81,62 @@ int rigid_sphere_command(int argc, const char* const* argv) {
   }
   try {
     const auto r = rigid_sphere::run_rigid_shell(o);
-    if (!series.empty()) {
-      const std::filesystem::path path(series), tmp(series + ".part");
-      {
-        std::ofstream out(tmp);
-        rigid_sphere::write_series_csv(r, out);
-        if (!out) throw std::runtime_error("cannot write " + tmp.string());
-      }
-      std::filesystem::rename(tmp, path);
-    }
-    // The change over the last kt: the last row against the row one kt before it.
-    const auto& last = r.series.back();
-    const rigid_sphere::RigidShellRow* before = &r.series.front();
-    for (const auto& row : r.series)
-      if (row.kt <= last.kt - 1.0 + 1e-9) before = &row;
-    std::cout << "a,marker_radius,level,nx,ny,nz,spin,kernel,precision,kt,torque,torque_exact,torque_change,stresslet,"
-                 "stresslet_change,leakage,lag,steps,seconds\n";
-    std::cout.precision(7);
-    std::cout << o.a << "," << (o.marker_radius > 0 ? o.marker_radius : o.a) << "," << o.level << "," << r.grid[0] << ","
-              << r.grid[1] << "," << r.grid[2] << "," << o.spin << "," << o.kernel << "," << o.precision << "," << last.kt << ","
-              << last.torque << "," << r.torque_exact << "," << last.torque - before->torque << "," << last.stresslet << ","
-              << last.stresslet - before->stresslet << "," << last.leakage << "," << last.lag << "," << r.steps << ","
-              << r.seconds << "\n";
+    std::ostringstream values;
+    values.precision(7);
+    values << o.a << "," << (o.marker_radius > 0 ? o.marker_radius : o.a) << "," << o.level << "," << r.grid[0] << ","
+           << r.grid[1] << "," << r.grid[2] << "," << o.spin << "," << o.kernel << "," << o.precision;
+    write_result(r, series, "a,marker_radius,level,nx,ny,nz,spin,kernel,precision", values.str());
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "capsule rigid-sphere: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+int rigid_circle_command(int argc, const char* const* argv) {
+  CLI::App app{"capsule rigid-circle: a rigid circle of IB markers in the 2D capsule's shear channel (no membrane\n"
+               "mechanics). Prints one CSV row: the torque and stresslet per unit length at the end against the unbounded\n"
+               "Stokes values (2 pi mu a^2 k (1 + 2 spin), 2 pi mu a^2 k), their change over the last kt, and the leakage."};
+  app.footer("Exit status: 0 done, 1 the run failed (blow-up, or a file could not be written), 2 bad command line.");
+  rigid_sphere::RigidCircleOptions o;
+  std::string series;
+  std::vector<double> domain;
+  app.add_option("--a", o.a, "circle radius in lattice nodes")->capture_default_str()->check(CLI::Range(2.0, 200.0));
+  app.add_option("--marker-radius", o.marker_radius, "radius of the markers (default: a)")->check(CLI::Range(1.0, 300.0));
+  app.add_option("--segments", o.segments, "markers on the circle (the 2D capsule's default 140)")->capture_default_str()
+      ->check(CLI::Range(16, 100000));
+  app.add_option("--domain", domain, "channel in units of a: x y (default 16 12, the 2D capsule's)")->expected(2)
+      ->check(CLI::Range(3.0, 100.0));
+  app.add_option("--re", o.Re, "Reynolds number k a^2 / nu")->capture_default_str()->check(CLI::Range(1e-4, 1.0));
+  app.add_option("--tau", o.tau, "relaxation time")->capture_default_str()->check(CLI::Range(0.51, 5.0));
+  app.add_option("--spin", o.spin, "rotation rate of the circle, in units of k (0 held, -0.5 free)")
+      ->capture_default_str()->check(CLI::Range(-2.0, 2.0));
+  app.add_option("--kt", o.kt, "run until this kt")->capture_default_str()->check(CLI::Range(0.01, 100.0));
+  app.add_option("--gain", o.gain, "tether gain: force per unit lag of a marker behind its anchor")
+      ->capture_default_str()->check(CLI::Range(1e-5, 1.0));
+  app.add_option("--kernel", o.kernel, "IB kernel")->capture_default_str()
+      ->check(CLI::IsMember({"peskin4", "roma3", "linear2", "cosine", "keys4"}));
+  app.add_option("--precision", o.precision, "fluid populations")->capture_default_str()->check(CLI::IsMember({"single", "double"}));
+  app.add_option("--every", o.every, "series interval in kt")->capture_default_str()->check(CLI::Range(1e-3, 100.0));
+  app.add_option("-o,--series", series, "CSV file for the series (kt, torque, stresslet, leakage, lag)");
+  if (const int code = parse_or_exit_code(app, argc, argv); code >= 0) return code;
+  if (!domain.empty()) o.domain[0] = domain[0], o.domain[1] = domain[1];
+  try {
+    rigid_sphere::validate(o);
+  } catch (const std::exception& e) {
+    std::cerr << "capsule rigid-circle: " << e.what() << "\n";
+    return 2;
+  }
+  try {
+    const auto r = rigid_sphere::run_rigid_circle(o);
+    std::ostringstream values;
+    values.precision(7);
+    values << o.a << "," << (o.marker_radius > 0 ? o.marker_radius : o.a) << "," << o.segments << "," << r.grid[0] << ","
+           << r.grid[1] << "," << o.spin << "," << o.kernel << "," << o.precision;
+    write_result(r, series, "a,marker_radius,segments,nx,ny,spin,kernel,precision", values.str());
+    return 0;
+  } catch (const std::exception& e) {
+    std::cerr << "capsule rigid-circle: " << e.what() << "\n";
     return 1;
   }
 }

@@ -58,10 +58,15 @@ struct Simulation2D::Impl {
     const double cx = 0.5 * n[0], cy = 0.5 * n[1];
     const double incline = 0.25 * std::numbers::pi;  // 45 degrees (Sec. 2.4)
     // "dissertation": (24)-(25) with the printed a, i.e. equivalent radius 0.740 a (Scene::biconcave_2d).
-    const double r_eq = s.biconcave_2d == "dissertation" ? s.a * membrane2d::biconcave_equivalent_radius() : s.a;
+    // Marker inset (scene resolution.marker_inset, 0 by default in 2D): the nodes, and the reference
+    // shape, on the radius r_m = a - inset, the moduli unchanged (as in 3D, simulation3d.cpp); the
+    // smeared membrane then acts as a circle of radius about a. E_b is the bending number of the
+    // circle the membrane is: E_B = E_b r_m^2 E_s.
+    const double scale = (s.a - s.marker_inset) / s.a;
+    const double r_eq = scale * (s.biconcave_2d == "dissertation" ? s.a * membrane2d::biconcave_equivalent_radius() : s.a);
     auto xy = s.shape == "biconcave" ? membrane2d::biconcave(s.segments, r_eq, cx, cy, incline)
-                                     : membrane2d::circle(s.segments, s.a, cx, cy, incline);
-    return membrane2d::Membrane(std::move(xy), {u.E_s, u.E_B, u.mu_s});
+                                     : membrane2d::circle(s.segments, scale * s.a, cx, cy, incline);
+    return membrane2d::Membrane(std::move(xy), {u.E_s, u.E_B * scale * scale, u.mu_s});
   }
 
   Impl(const Scene& s, const Units& u, const std::vector<int>& n)
@@ -311,6 +316,15 @@ std::string run_simulation2d(const Scene& scene, io::MemberWriter& out, const Ru
   Protocol protocol(scene);
   const Units& u = sim.units();
   record_units(out, scene, u);
+  if (scene.marker_inset != 0.0) {
+    // The nodes on r_m = a - inset, bending that of the circle they form (make_membrane).
+    const double r_m = scene.a - scene.marker_inset;
+    out.set_attribute("marker_inset", scene.marker_inset);
+    out.set_attribute("marker_radius", r_m);
+    out.set_attribute("E_B", u.E_B * (r_m / scene.a) * (r_m / scene.a));
+    out.set_attribute("E_B_convention", std::string("E_B = E_b r_m^2 E_s, r_m = a - marker_inset (the membrane's radius)") +
+                                            (scene.E_b_2d == "dissertation" ? ", with the dissertation's 2D factor 2 (README Conventions)" : ""));
+  }
   out.set_attribute("segments", static_cast<long>(scene.segments));
   out.set_attribute("delta", std::string("peskin4: Peskin 4-point (zero first moment), not the cosine (18): README"));
   out.set_attribute("beta_tracked", std::string("node 0, initially at the end of the major axis; wrapped into (-pi, pi]"));

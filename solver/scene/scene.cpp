@@ -328,12 +328,14 @@ Scene Scene::from_json(const json& j, const std::string& source) {
                "\"stresslet\" or a number in [0, 2]");
       }
     }
-    if (s.dim == 2 && (s.marker_inset != 0.0 || !s.marker_inset_rule.empty()))
-      q.fail("marker_inset", "a marker inset is 3D only", "0 in 2D");
+    // 2D: none by default (the circle's membrane sits on a); a number, or the rule where the
+    // 2D circle of markers was measured (capsule rigid-circle), is a scene choice.
     if (s.marker_inset_rule == "stresslet") {
-      const auto gap = ib::stresslet_radius_gap(s.kernel);
+      const auto gap = s.dim == 3 ? ib::stresslet_radius_gap(s.kernel) : ib::stresslet_radius_gap_2d(s.kernel);
       if (!gap)
-        q.fail("marker_inset", "the stresslet's inset is measured for the kernels peskin4, roma3 and keys4, not \"" + s.kernel + "\"",
+        q.fail("marker_inset", std::string("the stresslet's inset is measured for the kernels ") +
+                                   (s.dim == 3 ? "peskin4, roma3 and keys4" : "peskin4") + " in " + std::to_string(s.dim) +
+                                   "D, not \"" + s.kernel + "\"",
                "a number in [0, 2] with kernel \"" + s.kernel + "\"");
       s.marker_inset = ib::stresslet_marker_inset(*gap, s.a);
       if (!(s.marker_inset >= 0.0))

@@ -157,3 +157,24 @@ TEST_CASE("capsule rigid-sphere writes a summary row and a series; bad options e
   }
   fs::remove_all(dir);
 }
+
+TEST_CASE("capsule rigid-circle writes a summary row and a series; bad options exit 2", "[capsule2d]") {
+  const fs::path dir = scratch();
+  const fs::path series = dir / "series.csv";
+  const Result r = capsule("rigid-circle --a 3 --segments 32 --domain 5 5 --kt 0.1 --every 0.05 -o " + quote(series.string()));
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.output.rfind("a,marker_radius,segments,nx,ny,spin,kernel,precision,kt,torque,", 0) == 0);
+  CHECK(r.output.find("\n3,3,32,15,15,0,peskin4,double,") != std::string::npos);
+  std::ifstream in(series);
+  std::string header;
+  std::getline(in, header);
+  CHECK(header == "kt,torque,stresslet,leakage,lag,slip,slip_rms");
+  CHECK(!fs::exists(series.string() + ".part"));
+  for (const std::string& args : {std::string("rigid-circle --a 1"), std::string("rigid-circle --segments 8"),
+                                  std::string("rigid-circle --kernel gauss"), std::string("rigid-circle --domain 10 10 8")}) {
+    INFO("capsule " << args);
+    CHECK(capsule(args).exit_code == 2);
+  }
+  fs::remove_all(dir);
+}
