@@ -66,7 +66,7 @@ struct Simulation2D::Impl {
     const double r_eq = scale * (s.biconcave_2d == "dissertation" ? s.a * membrane2d::biconcave_equivalent_radius() : s.a);
     auto xy = s.shape == "biconcave" ? membrane2d::biconcave(s.segments, r_eq, cx, cy, incline)
                                      : membrane2d::circle(s.segments, scale * s.a, cx, cy, incline);
-    return membrane2d::Membrane(std::move(xy), {u.E_s, u.E_B * scale * scale, u.mu_s});
+    return membrane2d::Membrane(std::move(xy), {u.E_s, membrane_bending_modulus(s, u), u.mu_s});
   }
 
   Impl(const Scene& s, const Units& u, const std::vector<int>& n)
@@ -321,7 +321,7 @@ std::string run_simulation2d(const Scene& scene, io::MemberWriter& out, const Ru
     const double r_m = scene.a - scene.marker_inset;
     out.set_attribute("marker_inset", scene.marker_inset);
     out.set_attribute("marker_radius", r_m);
-    out.set_attribute("E_B", u.E_B * (r_m / scene.a) * (r_m / scene.a));
+    out.set_attribute("E_B", membrane_bending_modulus(scene, u));
     out.set_attribute("E_B_convention", std::string("E_B = E_b r_m^2 E_s, r_m = a - marker_inset (the membrane's radius)") +
                                             (scene.E_b_2d == "dissertation" ? ", with the dissertation's 2D factor 2 (README Conventions)" : ""));
   }

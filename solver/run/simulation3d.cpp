@@ -382,7 +382,7 @@ class Simulation3D {
     // inset, E_B = E_b r_m^2 E_s, so bending stands to the shear elasticity (E_B / (E_s r_m^2))
     // as on a membrane of radius a (the flow's radius sets Ca; the elastic response needs no such
     // factor: its strain does not carry a length, docs/findings/immersed_boundary_error_budget.md).
-    E_B_ = s.E_b * r_m * r_m * units_.E_s;
+    E_B_ = membrane_bending_modulus(s, units_);
     p.E_B = E_B_;
     if (s.reference_case == "B") {
       // c0 = 2 kappa of the start shape, node by node (Table 1, case B).

@@ -126,6 +126,11 @@ double dimensionless_E_b(const Scene& s) {
   return s.E_b;
 }
 
+double membrane_bending_modulus(const Scene& s, const Units& u) {
+  const double r_m = s.a - s.marker_inset;
+  return dimensionless_E_b(s) * r_m * r_m * u.E_s;
+}
+
 double choose_tau(const Scene& scene) {
   if (scene.tau > 0) return scene.tau;
   return scene.dim == 2 ? choose_tau_2d(scene) : choose_tau_3d(scene);

@@ -19,6 +19,11 @@ struct Units {
 // convention (Scene::E_b_2d).
 double dimensionless_E_b(const Scene& scene);
 
+// The bending modulus of the membrane the solver builds: its nodes on the radius
+// r_m = a - resolution.marker_inset, E_B = E_b r_m^2 E_s (E_b as dimensionless_E_b), the bending
+// number of the circle or sphere the membrane is. Without an inset it is units.E_B.
+double membrane_bending_modulus(const Scene& scene, const Units& units);
+
 // tau must be > 1/2; throws std::invalid_argument otherwise.
 Units units_for(const Scene& scene, double tau);
 

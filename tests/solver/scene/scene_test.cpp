@@ -351,6 +351,30 @@ TEST_CASE("lattice units follow (8), (34)-(36) and Re = k a^2 / nu", "[scene]") 
   CHECK_THROWS(capsule::units_for(s, 0.5));
 }
 
+
+TEST_CASE("the membrane's bending modulus is that of the circle or sphere its nodes form", "[scene]") {
+  // Without an inset it is units.E_B to the bit (the members run before the helper keep their numbers).
+  json j2 = minimal_2d();
+  const Scene plain = Scene::from_json(j2, "t.json");
+  const auto u = capsule::units_for(plain, 1.0);
+  CHECK(capsule::membrane_bending_modulus(plain, u) == u.E_B);
+  // Nodes on r_m = a - inset: E_B = E_b r_m^2 E_s, and the 2D dissertation convention's factor 2 stays.
+  j2["resolution"] = {{"a", 10.0}, {"marker_inset", 0.5}};
+  j2["conventions"] = {{"E_b_2d", "dissertation"}};
+  const Scene inset_2d = Scene::from_json(j2, "t.json");
+  const auto u2 = capsule::units_for(inset_2d, 1.0);
+  CHECK(capsule::membrane_bending_modulus(inset_2d, u2) / (9.5 * 9.5 * u2.E_s) == Approx(2.0 * inset_2d.E_b).epsilon(1e-14));
+  json j3 = minimal_2d();
+  j3["dim"] = 3;
+  j3["shape"] = "sphere";
+  j3["resolution"] = {{"a", 7.0}};  // the stresslet's inset, about 0.47
+  const Scene sphere = Scene::from_json(j3, "t.json");
+  const auto u3 = capsule::units_for(sphere, 1.0);
+  const double r_m = 7.0 - sphere.marker_inset;
+  CHECK(sphere.marker_inset > 0.4);
+  CHECK(capsule::membrane_bending_modulus(sphere, u3) == Approx(sphere.E_b * r_m * r_m * u3.E_s).epsilon(1e-14));
+  CHECK(capsule::membrane_bending_modulus(sphere, u3) < u3.E_B);
+}
 TEST_CASE("3D relaxation-time rule: tau = 1.5 where stable, lowered by the coupling bounds", "[scene]") {
   auto sphere = [](double Ca, double E_b, double a) {
     json j = json::parse(R"({"dim": 3, "shape": "sphere", "V": 1, "eta": 0,
