@@ -26,11 +26,7 @@ void validate(const RigidCircleOptions& o) {
 RigidShellResult run_rigid_circle(const RigidCircleOptions& o) {
   validate(o);
   const double a = o.a, r_m = o.marker_radius > 0 ? o.marker_radius : o.a;
-  TetheredMarkers s;
-  s.dim = 2;
-  s.nu = (o.tau - 0.5) / 3.0;  // (8), rho = 1: mu = nu
-  s.k = o.Re * s.nu / (a * a);
-  s.Omega = o.spin * s.k;
+  TetheredMarkers s = tethered_markers_from(o, 2, "rigid circle");
   RigidShellResult result;
   result.grid[0] = s.grid[0] = static_cast<int>(std::lround(o.domain[0] * a));
   result.grid[1] = s.grid[1] = static_cast<int>(std::lround(o.domain[1] * a));
@@ -45,14 +41,6 @@ RigidShellResult run_rigid_circle(const RigidCircleOptions& o) {
   // Unbounded values per unit length: torque 2 pi mu a^2 k (1 + 2 spin), stresslet 2 pi mu a^2 k.
   s.torque_unit = s.stresslet_unit = 2.0 * std::numbers::pi * s.nu * a * a * s.k;
   result.torque_exact = 1.0 + 2.0 * o.spin;
-  s.length = a;
-  s.inside = r_m - 2.5;  // nodes deeper than the kernel's reach (2) plus half a node
-  s.gain = o.gain;
-  s.kt = o.kt;
-  s.every = o.every;
-  s.kernel = o.kernel;
-  s.precision = o.precision;
-  s.name = "rigid circle";
   run_tethered_markers(s, result);
   return result;
 }

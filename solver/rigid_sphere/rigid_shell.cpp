@@ -29,11 +29,7 @@ void validate(const RigidShellOptions& o) {
 RigidShellResult run_rigid_shell(const RigidShellOptions& o) {
   validate(o);
   const double a = o.a, r_m = o.marker_radius > 0 ? o.marker_radius : o.a;
-  TetheredMarkers s;
-  s.dim = 3;
-  s.nu = (o.tau - 0.5) / 3.0;  // (8), rho = 1: mu = nu
-  s.k = o.Re * s.nu / (a * a);
-  s.Omega = o.spin * s.k;
+  TetheredMarkers s = tethered_markers_from(o, 3, "rigid shell");
   RigidShellResult result;
   for (int d = 0; d < 3; ++d) result.grid[d] = s.grid[d] = static_cast<int>(std::lround(o.domain[d] * a));
   // The capsule's own icosphere at the marker radius, centred in the box.
@@ -44,14 +40,6 @@ RigidShellResult run_rigid_shell(const RigidShellOptions& o) {
   s.torque_unit = 4.0 * std::numbers::pi * s.nu * a * a * a * s.k;
   s.stresslet_unit = (10.0 / 3.0) * std::numbers::pi * s.nu * a * a * a * s.k;
   result.torque_exact = 1.0 + 2.0 * o.spin;
-  s.length = a;
-  s.inside = r_m - 2.5;  // nodes deeper than the kernel's reach (2) plus half a node
-  s.gain = o.gain;
-  s.kt = o.kt;
-  s.every = o.every;
-  s.kernel = o.kernel;
-  s.precision = o.precision;
-  s.name = "rigid shell";
   run_tethered_markers(s, result);
   return result;
 }

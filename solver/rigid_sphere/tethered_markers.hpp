@@ -57,6 +57,28 @@ void validate_tethered_options(const Options& o, const std::string& body) {
   lbm::precision_from_name(o.precision);
 }
 
+// The setup both bodies derive alike from their options: the fluid from tau and Re ((8), rho = 1,
+// so mu = nu; Re = k a^2 / nu), the anchors' spin, the run's length, and the measures' scales
+// (leakage read deeper than the kernel's reach, 2, plus half a node inside the markers). The
+// grid, the anchors and the exact units are each body's own.
+template <class Options>
+TetheredMarkers tethered_markers_from(const Options& o, int dim, const std::string& body) {
+  TetheredMarkers s;
+  s.dim = dim;
+  s.nu = (o.tau - 0.5) / 3.0;
+  s.k = o.Re * s.nu / (o.a * o.a);
+  s.Omega = o.spin * s.k;
+  s.length = o.a;
+  s.inside = (o.marker_radius > 0 ? o.marker_radius : o.a) - 2.5;
+  s.gain = o.gain;
+  s.kt = o.kt;
+  s.every = o.every;
+  s.kernel = o.kernel;
+  s.precision = o.precision;
+  s.name = body;
+  return s;
+}
+
 // Runs from the undisturbed Couette flow; a row every setup.every kt and at the end. Fills the
 // result's series, steps and seconds (grid and torque_exact are the caller's).
 void run_tethered_markers(const TetheredMarkers& setup, RigidShellResult& result);
