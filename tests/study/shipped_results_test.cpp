@@ -29,9 +29,7 @@ bool final_state(MemberState s) {
 // The campaigns whose base still names an earlier physics version, waiting for their rerun on
 // today's (docs/guide/campaigns.md "Physics versions"). Exactly the pinned ones: a campaign moved
 // to today's physics leaves this list, and a new pin has to be written here.
-const std::set<std::string> awaiting_rerun = {
-    "ch5_powerlaw",
-};
+const std::set<std::string> awaiting_rerun = {};
 
 }  // namespace
 
