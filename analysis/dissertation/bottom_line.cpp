@@ -25,6 +25,10 @@ std::string by_chapter(const std::map<std::string, std::map<ClaimVerdict, int>>&
 
 // "1 claim" / "5 claims".
 std::string claims_count(int n) { return std::to_string(n) + (n == 1 ? " claim" : " claims"); }
+// "1 claim agrees", "2 claims agree": the verb follows the count
+std::string claims_verb(int n, const std::string& plural_verb, const std::string& singular_verb) {
+  return claims_count(n) + " " + (n == 1 ? singular_verb : plural_verb);
+}
 
 }  // namespace
 
@@ -45,10 +49,10 @@ std::string bottom_line_markdown(const std::vector<ClaimResult>& rows, const Dis
   const auto number_of = [&keys_with](ClaimVerdict v) { return static_cast<int>(keys_with[v].size()); };
   std::string md = "**Bottom line** (the dissertation's " + claims_count(static_cast<int>(verdicts.size())) +
                    " against the shipped results):\n\n";
-  md += "- **Reproduced:** " + claims_count(number_of(ClaimVerdict::agrees)) + " agree" + by_chapter(by_chapter_counts, ClaimVerdict::agrees) + ".\n";
-  md += "- **Not reproduced:** " + claims_count(number_of(ClaimVerdict::differs)) + " differ" + by_chapter(by_chapter_counts, ClaimVerdict::differs);
+  md += "- **Reproduced:** " + claims_verb(number_of(ClaimVerdict::agrees), "agree", "agrees") + by_chapter(by_chapter_counts, ClaimVerdict::agrees) + ".\n";
+  md += "- **Not reproduced:** " + claims_verb(number_of(ClaimVerdict::differs), "differ", "differs") + by_chapter(by_chapter_counts, ClaimVerdict::differs);
   if (number_of(ClaimVerdict::in_part) > 0)
-    md += ", and " + claims_count(number_of(ClaimVerdict::in_part)) + " hold only in part (the rows of one claim disagree): " +
+    md += ", and " + claims_verb(number_of(ClaimVerdict::in_part), "hold", "holds") + " only in part (the rows of one claim disagree): " +
           claim_links(keys_with[ClaimVerdict::in_part]);
   md += ".\n";
   md += "- **Cannot tell:** " + claims_count(number_of(ClaimVerdict::cannot_tell)) + ", for want of a campaign, a member or a result converged in resolution";

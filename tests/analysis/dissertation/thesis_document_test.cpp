@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 
+#include "analysis/dissertation/bottom_line.hpp"
 #include "analysis/dissertation/chapter_tables.hpp"
 #include "analysis/dissertation/claim_texts.hpp"
 #include "analysis/dissertation/claims.hpp"
@@ -161,11 +162,16 @@ TEST_CASE("Thesis document: the bottom line's counts are the verdicts' counts", 
   const std::size_t from = t.md.find("**Bottom line**");
   const std::string bottom = t.md.substr(from, t.md.find("## Claims by chapter") - from);
   INFO(bottom);
-  CHECK(bottom.find("(the dissertation's " + std::to_string(verdicts.size()) + " claims") != std::string::npos);
-  CHECK(bottom.find("**Reproduced:** " + std::to_string(count[ClaimVerdict::agrees]) + " claims agree") != std::string::npos);
-  CHECK(bottom.find("**Not reproduced:** " + std::to_string(count[ClaimVerdict::differs]) + " claims differ") != std::string::npos);
-  CHECK(bottom.find(std::to_string(count[ClaimVerdict::in_part]) + " claims hold only in part") != std::string::npos);
-  CHECK(bottom.find("**Cannot tell:** " + std::to_string(count[ClaimVerdict::cannot_tell]) + " claims") != std::string::npos);
+  // "1 claim agrees", "2 claims agree"
+  const auto claims = [](int n, const std::string& plural_verb, const std::string& singular_verb) {
+    return std::to_string(n) + (n == 1 ? " claim" + singular_verb : " claims" + plural_verb);
+  };
+  CHECK(bottom.find("(the dissertation's " + claims(static_cast<int>(verdicts.size()), "", "")) != std::string::npos);
+  CHECK(bottom.find("**Reproduced:** " + claims(count[ClaimVerdict::agrees], " agree", " agrees")) != std::string::npos);
+  CHECK(bottom.find("**Not reproduced:** " + claims(count[ClaimVerdict::differs], " differ", " differs")) != std::string::npos);
+  if (count[ClaimVerdict::in_part] > 0)
+    CHECK(bottom.find(claims(count[ClaimVerdict::in_part], " hold", " holds") + " only in part") != std::string::npos);
+  CHECK(bottom.find("**Cannot tell:** " + claims(count[ClaimVerdict::cannot_tell], ",", ",")) != std::string::npos);
   CHECK(t.summary.claims_agree == count[ClaimVerdict::agrees]);
   CHECK(t.summary.claims_differ == count[ClaimVerdict::differs]);
   CHECK(t.summary.claims_in_part == count[ClaimVerdict::in_part]);
@@ -225,4 +231,24 @@ TEST_CASE("Thesis document: a long cell is cut at a word, and anchors are stable
   CHECK(anchor_id("claim", "3.2 small Ca") == "claim-3-2-small-ca");
   CHECK(claim_anchor("5.1.2 V*") == "claim-5-1-2-v");
   CHECK(split_list(" a; b ;; c") == std::vector<std::string>{"a", "b", "c"});
+}
+
+TEST_CASE("Thesis document: the bottom line's verbs follow its counts (1 claim agrees, 2 claims differ)", "[analysis][dissertation]") {
+  const auto row = [](const std::string& key, const std::string& section, Verdict v) {
+    ClaimResult r;
+    r.key = key;
+    r.section = section;
+    r.verdict = v;
+    return r;
+  };
+  // one claim agrees, two differ, one holds in part (its two rows disagree), one cannot be told
+  const std::vector<ClaimResult> rows = {row("3.1 one", "3.1", Verdict::agrees),      row("3.1 two", "3.1", Verdict::differs),
+                                         row("3.2 three", "3.2", Verdict::differs),    row("3.3 four", "3.3", Verdict::agrees),
+                                         row("3.3 four", "3.3", Verdict::differs),     row("5.2 five", "5.2", Verdict::cannot_tell)};
+  const std::string md = bottom_line_markdown(rows, DissertationSummary{});
+  INFO(md);
+  CHECK(md.find("(the dissertation's 5 claims against") != std::string::npos);
+  CHECK(md.find("**Reproduced:** 1 claim agrees (Ch. 3: 1)") != std::string::npos);
+  CHECK(md.find("**Not reproduced:** 2 claims differ (Ch. 3: 2), and 1 claim holds only in part") != std::string::npos);
+  CHECK(md.find("**Cannot tell:** 1 claim, for want of") != std::string::npos);
 }
