@@ -60,6 +60,8 @@ ClaimResult claim_5_1_3_ratios_differ(const DissertationResults& res);
 ClaimResult claim_5_1_2(const DissertationResults& res, const std::string& campaign, double V_base, const std::string& figure);
 ClaimResult claim_5_2_pairs(const DissertationResults& res, bool initial);
 ClaimResult claim_5_2_n(const DissertationResults& res);
+ClaimResult claim_5_2_inclination(const DissertationResults& res);
+ClaimResult claim_5_2_gamma_range(const DissertationResults& res);
 ClaimResult claim_5_2_mesh(const DissertationResults& res);
 ClaimResult claim_5_2_gamma(const DissertationResults& res);
 ClaimResult claim_5_2_fig66(const DissertationResults& res);

@@ -63,7 +63,9 @@ void write_ch4_2d_tt(const std::filesystem::path& dir, const std::string& path) 
 
 // A ch5_powerlaw member: D_xy rises as D_steady (1 - exp(-kt / 0.8)) under shear until kt 10.
 // Its scene names power_law.K (0 for Kelvin-Voigt) and, where given, conventions.sls_viscosity.
-void write_shear_member(const std::filesystem::path& file, double K, const std::string& sls, double D_steady, double n = 0.64) {
+// `theta`: its inclination throughout the shear.
+void write_shear_member(const std::filesystem::path& file, double K, const std::string& sls, double D_steady, double n = 0.64,
+                        double theta = 0.3) {
   std::filesystem::create_directories(file.parent_path());
   capsule::io::MemberWriter w(file.string());
   nlohmann::json scene{{"dim", 3}, {"Ca", 0.1}, {"E_b", 0.0}, {"V", 1.0}, {"power_law", {{"K", K}, {"n", n}}}};
@@ -71,7 +73,7 @@ void write_shear_member(const std::filesystem::path& file, double K, const std::
   w.set_scene(scene);
   for (int i = 0; i <= 200; ++i) {
     const double t = 0.05 * i;
-    w.append({{"kt", t}, {"D_xy", D_steady * (1.0 - std::exp(-t / 0.8))}, {"theta", 0.3}, {"shear_on", 1.0}});
+    w.append({{"kt", t}, {"D_xy", D_steady * (1.0 - std::exp(-t / 0.8))}, {"theta", theta}, {"shear_on", 1.0}});
   }
   const double nan = std::numeric_limits<double>::quiet_NaN();
   w.set_markers({{"t_max", nan}, {"D_max", nan}, {"t_stop", 10.0}, {"D_stop", D_steady}, {"t_min", nan}, {"D_min", nan},
@@ -702,4 +704,92 @@ TEST_CASE("Dissertation claims: case C's D_xy does not swing during the shear (F
   CHECK(steady.verdict == Verdict::agrees);
   CHECK(steady.measured.find("over kt 7.5-15 (swing 0)") != std::string::npos);
   CHECK(judge(0.05).verdict == Verdict::differs);
+}
+
+TEST_CASE("Dissertation claims: 5.2.1 inclination, the power law inclined less than its equal-viscosity partner", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_inclination");
+  const auto dir = tmp.path / "ch5_powerlaw";
+  // K = 10 power law against the physical Kelvin-Voigt eta = 10 at a = 7 (theta_fine) and,
+  // where given, a = 5 (theta_coarse); the partner is inclined at 0.3 at both levels.
+  const auto judge = [&](double theta_fine, double theta_coarse) {
+    write_shear_member(dir / "members/K10/member.h5", 10.0, "", 0.1, 0.64, theta_fine);
+    write_shear_member(dir / "members/kvp10/member.h5", 0.0, "physical", 0.2, 0.64, 0.3);
+    nlohmann::json m = nlohmann::json::array(
+        {member_json("K10", "K", {{"eta", 0.0}, {"resolution.a", 7.0}}, {}, "members/K10/member.h5"),
+         member_json("kvp10", "kv_physical", {{"eta", 10.0}, {"resolution.a", 7.0}}, {}, "members/kvp10/member.h5")});
+    if (!std::isnan(theta_coarse)) {
+      write_shear_member(dir / "members/K10a5/member.h5", 10.0, "", 0.1, 0.64, theta_coarse);
+      write_shear_member(dir / "members/kvp10a5/member.h5", 0.0, "physical", 0.2, 0.64, 0.3);
+      m.push_back(member_json("K10a5", "K", {{"eta", 0.0}, {"resolution.a", 5.0}}, {}, "members/K10a5/member.h5"));
+      m.push_back(member_json("kvp10a5", "kv_physical", {{"eta", 10.0}, {"resolution.a", 5.0}}, {}, "members/kvp10a5/member.h5"));
+    }
+    const nlohmann::json analysis{{"fits", {"response"}}, {"ladder", {{{"key", "resolution.a"}, {"quantities", {"response.k_tau_s"}}}}}};
+    write_fits(tmp.path, "ch5_powerlaw", m, nlohmann::json::array(), analysis);
+    return find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "5.2.1", "angles of inclination");
+  };
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  const ClaimResult smaller = judge(0.2, none);
+  INFO(smaller.measured);
+  CHECK(smaller.verdict == Verdict::agrees);
+  CHECK(smaller.measured.find("K = physical eta = 10: theta power 0.2, kv 0.3") != std::string::npos);
+  CHECK(judge(0.4, none).verdict == Verdict::differs);
+  const ClaimResult both = judge(0.2, 0.25);
+  INFO(both.measured);
+  CHECK(both.verdict == Verdict::agrees);
+  CHECK(both.measured.find("next coarser level (resolution.a 5): 0.25 against 0.3") != std::string::npos);
+  const ClaimResult split = judge(0.2, 0.35);  // inclined more than its partner at a = 5
+  INFO(split.measured);
+  CHECK(split.verdict == Verdict::cannot_tell);
+  CHECK(split.measured.find("the two finest levels disagree") != std::string::npos);
+  SECTION("no partner of equal physical viscosity: cannot tell") {
+    write_shear_member(dir / "members/K10/member.h5", 10.0, "", 0.1, 0.64, 0.2);
+    write_fits(tmp.path, "ch5_powerlaw",
+               nlohmann::json::array({member_json("K10", "K", {{"eta", 0.0}}, {}, "members/K10/member.h5")}));
+    const auto c = find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "5.2.1", "angles of inclination");
+    CHECK(c.verdict == Verdict::cannot_tell);
+    CHECK(c.measured.find("members missing") != std::string::npos);
+  }
+}
+
+// A ch5_powerlaw case gamma member: shear until kt 20, gamma_max 0.05 x (1 + (factor - 1) (1 + sin(kt))/2)
+// (from 0.05 to 0.05 x factor), with a start-up spike of 0.2 at kt 0.05 that the rule skips.
+void write_gamma_member(const std::filesystem::path& file, double factor) {
+  std::filesystem::create_directories(file.parent_path());
+  capsule::io::MemberWriter w(file.string());
+  w.set_scene({{"dim", 3}, {"Ca", 0.1}, {"E_b", 0.0}, {"V", 1.0}, {"power_law", {{"K", 100.0}, {"n", 0.64}}}});
+  for (int i = 0; i <= 400; ++i) {
+    const double t = 0.05 * i;
+    const double g = i == 1 ? 0.2 : 0.05 * (1.0 + (factor - 1.0) * 0.5 * (1.0 + std::sin(t)));
+    w.append({{"kt", t}, {"D_xy", 0.01}, {"theta", 0.4}, {"shear_on", 1.0}, {"gamma_max", g}, {"gamma_min", 0.002}});
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  w.set_markers({{"t_max", nan}, {"D_max", nan}, {"t_stop", 20.0}, {"D_stop", 0.01}, {"t_min", nan}, {"D_min", nan},
+                 {"t_end", 20.0}, {"D_inf", nan}});
+  w.finish("complete");
+}
+
+TEST_CASE("Dissertation claims: 5.2.1 gamma range, gamma_max varies by at most 1.5 over the shear (Fig. 64)", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_gamma_range");
+  const auto dir = tmp.path / "ch5_powerlaw";
+  const auto judge = [&](double fine, double coarse) {
+    write_gamma_member(dir / "members/g7/member.h5", fine);
+    write_gamma_member(dir / "members/g5/member.h5", coarse);
+    nlohmann::json m = nlohmann::json::array(
+        {member_json("gamma-a7", "gamma", {{"resolution.a", 7.0}}, {}, "members/g7/member.h5"),
+         member_json("gamma-a5", "gamma", {{"resolution.a", 5.0}}, {}, "members/g5/member.h5")});
+    const nlohmann::json analysis{{"fits", {"response"}}, {"ladder", {{{"key", "resolution.a"}, {"quantities", {"response.k_tau_s"}}}}}};
+    write_fits(tmp.path, "ch5_powerlaw", m, nlohmann::json::array(), analysis);
+    return find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "5.2.1", "changes little");
+  };
+  const ClaimResult little = judge(1.2, 1.3);  // the spike of 4 at kt 0.05 lies before kt 0.5
+  INFO(little.measured);
+  CHECK(little.verdict == Verdict::agrees);
+  CHECK(little.measured.find("gamma-a7: factor 1.2 (gamma_max 0.05 to 0.06") != std::string::npos);
+  CHECK(little.measured.find("gamma_min 0.002 to 0.002") != std::string::npos);
+  CHECK(little.measured.find("next coarser level: 1.3 at resolution.a 5") != std::string::npos);
+  CHECK(judge(3.0, 2.5).verdict == Verdict::differs);
+  const ClaimResult split = judge(1.2, 2.0);
+  INFO(split.measured);
+  CHECK(split.verdict == Verdict::cannot_tell);
+  CHECK(split.measured.find("the two finest levels disagree") != std::string::npos);
 }
