@@ -212,6 +212,16 @@ ClaimResult claim_5_2_n(const DissertationResults& res) {
   return r;
 }
 
+// The verdict of a rule judged at the finest level and, where every judged member has a value
+// there, at the next coarser level of the ladder (`compared`): cannot tell when the two disagree.
+void set_at_two_levels(ClaimResult& r, bool fine_ok, bool coarse_ok, bool compared, const std::string& text) {
+  if (compared && coarse_ok != fine_ok) {
+    r.measured = "cannot tell (the two finest levels disagree): " + text;
+    return;
+  }
+  set(r, fine_ok, text);
+}
+
 // The mean of a series over the second half of a member's shear [t_stop / 2, t_stop]: the
 // approach to steady state, averaged over the damped oscillation of the stiffer members (their
 // shear's steady test can stop them at any phase of it). NaN when the member has no such series.
@@ -276,11 +286,7 @@ ClaimResult claim_5_2_inclination(const DissertationResults& res) {
   text = "mean theta (rad) over the second half of the shear, " + text;
   if (coarse_all && !coarse_text.empty()) text += "; next coarser level (" + level + "): " + coarse_text;
   if (!why.empty()) text += "; not judged: " + why;
-  if (coarse_all && !coarse_text.empty() && coarse_ok != fine_ok) {
-    r.measured = "cannot tell (the two finest levels disagree): " + text;
-    return r;
-  }
-  set(r, fine_ok, text);
+  set_at_two_levels(r, fine_ok, coarse_ok, coarse_all && !coarse_text.empty(), text);
   return r;
 }
 
@@ -346,11 +352,7 @@ ClaimResult claim_5_2_gamma_range(const DissertationResults& res) {
   }
   if (coarse_all && !coarse_text.empty()) text += "; next coarser level: " + coarse_text;
   if (!why.empty()) text += "; not judged: " + why;
-  if (coarse_all && !coarse_text.empty() && coarse_ok != fine_ok) {
-    r.measured = "cannot tell (the two finest levels disagree): " + text;
-    return r;
-  }
-  set(r, fine_ok, text);
+  set_at_two_levels(r, fine_ok, coarse_ok, coarse_all && !coarse_text.empty(), text);
   return r;
 }
 
