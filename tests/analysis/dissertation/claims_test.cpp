@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <tuple>
+#include <vector>
 
 #include "analysis/dissertation/claims.hpp"
 #include "analysis/dissertation/report.hpp"
@@ -398,6 +401,40 @@ TEST_CASE("Dissertation claims: 5.2.1 pairs each power law with the Kelvin-Voigt
         CHECK(c.measured.find("K = physical eta = 10: D power") != std::string::npos);  // the pair still shown
       } else {
         CHECK(c.verdict == Verdict::agrees);
+      }
+    }
+  }
+  SECTION("one converged pair outside the criterion decides differs; an unconverged pair alone cannot tell") {
+    // K = 10 pair converged (the same D at a = 5 and 7); K = 20 pair 5 % apart at a = 7, but its
+    // power law deformed 0.30 at a = 5 against 0.20 at a = 7 (50 %: not converged).
+    for (const double D_kv10 : {0.50, 0.315}) {  // K = 10 pair 40 % apart (differs) or 5 % (agrees)
+      write_shear_member(dir / "members/K10a5/member.h5", 10.0, "dissertation", 0.30);
+      write_shear_member(dir / "members/kvp10/member.h5", 0.0, "physical", D_kv10);
+      write_shear_member(dir / "members/kvp10a5/member.h5", 0.0, "physical", D_kv10);
+      write_shear_member(dir / "members/K20/member.h5", 20.0, "dissertation", 0.20);
+      write_shear_member(dir / "members/K20a5/member.h5", 20.0, "dissertation", 0.30);
+      write_shear_member(dir / "members/kvp20/member.h5", 0.0, "physical", 0.21);
+      write_shear_member(dir / "members/kvp20a5/member.h5", 0.0, "physical", 0.21);
+      nlohmann::json m = nlohmann::json::array();
+      for (const auto& [slug, kase, eta, K, a] : std::vector<std::tuple<std::string, std::string, double, double, double>>{
+               {"K10", "K", 0.0, 10.0, 7.0}, {"K10a5", "K", 0.0, 10.0, 5.0}, {"kvp10", "kv_physical", 10.0, 0.0, 7.0},
+               {"kvp10a5", "kv_physical", 10.0, 0.0, 5.0}, {"K20", "K", 0.0, 20.0, 7.0}, {"K20a5", "K", 0.0, 20.0, 5.0},
+               {"kvp20", "kv_physical", 20.0, 0.0, 7.0}, {"kvp20a5", "kv_physical", 20.0, 0.0, 5.0}})
+        m.push_back(member_json(slug, kase, {{"eta", eta}, {"power_law.K", K}, {"resolution.a", a}}, {},
+                                "members/" + slug + "/member.h5"));
+      const nlohmann::json analysis{{"fits", {"response"}}, {"ladder", {{{"key", "resolution.a"}, {"quantities", {"response.k_tau_s"}}}}}};
+      write_fits(tmp.path, "ch5_powerlaw", m, nlohmann::json::array(), analysis);
+      const auto claims = evaluate_claims(DissertationResults(tmp.path.string()));
+      const auto& c = find_claim(claims, "5.2.1", "steady");
+      INFO(c.measured);
+      CHECK(c.measured.find("power law K = 20") != std::string::npos);  // the unconverged pair named
+      CHECK(c.measured.find("K = physical eta = 10: D power") != std::string::npos);
+      if (D_kv10 > 0.4) {
+        CHECK(c.verdict == Verdict::differs);
+        CHECK(c.measured.find("decided by the converged pairs") != std::string::npos);
+      } else {
+        CHECK(c.verdict == Verdict::cannot_tell);
+        CHECK(c.measured.find("not converged in resolution") != std::string::npos);
       }
     }
   }
