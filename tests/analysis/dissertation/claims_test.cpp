@@ -20,6 +20,15 @@ using namespace capsule::analysis::testing;
 
 namespace {
 
+// Write the markers of a sheared member (stop and end; no overshoot or minimum) and close it.
+void finish_shear_member(capsule::io::MemberWriter& w, double t_stop, double D_stop, double t_end,
+                         double D_inf = std::numeric_limits<double>::quiet_NaN()) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  w.set_markers({{"t_max", nan}, {"D_max", nan}, {"t_stop", t_stop}, {"D_stop", D_stop}, {"t_min", nan}, {"D_min", nan},
+                 {"t_end", t_end}, {"D_inf", D_inf}});
+  w.finish("complete");
+}
+
 // ch3_ca, case 2d: k tau_r = f(Ca) at the given Ca, response k tau_s = 0.4, R^2 as given.
 void write_ch3_ca(const std::filesystem::path& dir, const std::vector<double>& ca, double (*k_tau_r)(double),
                   double recovery_r2 = 0.999) {
@@ -51,10 +60,7 @@ void write_no_bending_member(const std::filesystem::path& file, bool recovers) {
     }
     w.append({{"kt", t}, {"D_xy", D}, {"theta", 0.3}, {"shear_on", t <= 5.0 ? 1.0 : 0.0}});
   }
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  w.set_markers({{"t_max", nan}, {"D_max", nan}, {"t_stop", 5.0}, {"D_stop", 0.7}, {"t_min", nan}, {"D_min", nan},
-                 {"t_end", 30.0}, {"D_inf", nan}});
-  w.finish("complete");
+  finish_shear_member(w, 5.0, 0.7, 30.0);
 }
 
 void write_ch4_2d_tt(const std::filesystem::path& dir, const std::string& path) {
@@ -78,10 +84,7 @@ void write_shear_member(const std::filesystem::path& file, double K, const std::
     const double t = 0.05 * i;
     w.append({{"kt", t}, {"D_xy", D_steady * (1.0 - std::exp(-t / 0.8))}, {"theta", theta}, {"shear_on", 1.0}});
   }
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  w.set_markers({{"t_max", nan}, {"D_max", nan}, {"t_stop", 10.0}, {"D_stop", D_steady}, {"t_min", nan}, {"D_min", nan},
-                 {"t_end", 10.0}, {"D_inf", nan}});
-  w.finish("complete");
+  finish_shear_member(w, 10.0, D_steady, 10.0);
 }
 
 
@@ -98,10 +101,7 @@ void write_table1_member(const std::filesystem::path& file, double D_stop, doubl
     const double phase = 0.8 + (phase_end - 0.8) * s;
     w.append({{"kt", t}, {"D_xy", D}, {"theta", 0.3}, {"shear_on", t <= 15.0 ? 1.0 : 0.0}}, {phase, -phase});
   }
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  w.set_markers({{"t_max", nan}, {"D_max", nan}, {"t_stop", 15.0}, {"D_stop", D_stop}, {"t_min", nan}, {"D_min", nan},
-                 {"t_end", 65.0}, {"D_inf", nan}});
-  w.finish("complete");
+  finish_shear_member(w, 15.0, D_stop, 65.0);
 }
 
 // A ch4_2d_tumble member whose shear ends when theta falls to -pi/3, capped at kt 50: it stops
@@ -122,10 +122,7 @@ void write_tumble_member(const std::filesystem::path& file, double t_stop, bool 
     if (folded) D = t <= t_stop ? -0.07 : 0.8 - 0.2 * std::exp(-(t - t_stop) / 2.0);
     w.append({{"kt", t}, {"D_xy", D}, {"theta", t <= t_stop ? -0.5 : 0.2}, {"shear_on", t <= t_stop ? 1.0 : 0.0}});
   }
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  w.set_markers({{"t_max", nan}, {"D_max", nan}, {"t_stop", t_stop}, {"D_stop", 0.5}, {"t_min", nan}, {"D_min", nan},
-                 {"t_end", t_stop + 50.0}, {"D_inf", 0.8}});
-  w.finish("complete");
+  finish_shear_member(w, t_stop, 0.5, t_stop + 50.0, 0.8);
 }
 
 }  // namespace
@@ -491,10 +488,7 @@ void write_oscillatory_member(const std::filesystem::path& file, double factor) 
     w.append({{"kt", t}, {"D_xy", 0.2 * std::abs(std::sin(M_PI * t / 4.0))}, {"theta", 0.3}, {"shear_on", 1.0},
               {"gamma_max", g}});
   }
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  w.set_markers({{"t_max", nan}, {"D_max", nan}, {"t_stop", 20.0}, {"D_stop", 0.0}, {"t_min", nan}, {"D_min", nan},
-                 {"t_end", 20.0}, {"D_inf", nan}});
-  w.finish("complete");
+  finish_shear_member(w, 20.0, 0.0, 20.0);
 }
 
 TEST_CASE("Dissertation claims: 5.2.2 cannot tell when the factor moves with resolution across its band's edge", "[analysis][dissertation]") {
@@ -533,10 +527,7 @@ TEST_CASE("Dissertation claims: Fig. 12's G independence agrees within 2 %, diff
       const double t = 0.05 * i;
       w.append({{"kt", t}, {"D_xy", D_steady * (1.0 - std::exp(-t / 0.8))}, {"theta", 0.3}, {"shear_on", 1.0}});
     }
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    w.set_markers({{"t_max", nan}, {"D_max", nan}, {"t_stop", 5.0}, {"D_stop", nan}, {"t_min", nan}, {"D_min", nan},
-                   {"t_end", 5.0}, {"D_inf", nan}});
-    w.finish("complete");
+    finish_shear_member(w, 5.0, std::numeric_limits<double>::quiet_NaN(), 5.0);
     return member_json(slug, "G", {{"G", G}}, {}, "members/" + slug + "/member.h5");
   };
   nlohmann::json members = nlohmann::json::array({write_G_member("G10", 10, 0.372), write_G_member("G25", 25, 0.374)});
@@ -680,10 +671,7 @@ TEST_CASE("Dissertation claims: a tumbling recovery that steps back by more than
           if (after > 0) D = 0.8 - 0.3 * std::exp(-after / 2.0) - (i == 0 ? dip * std::sin(M_PI * std::min(after, 1.0)) : 0.0);
           w.append({{"kt", t}, {"D_xy", D}, {"theta", after > 0 ? 0.2 : -0.5}, {"shear_on", after > 0 ? 0.0 : 1.0}});
         }
-        const double nan = std::numeric_limits<double>::quiet_NaN();
-        w.set_markers({{"t_max", nan}, {"D_max", nan}, {"t_stop", 10.0}, {"D_stop", 0.5}, {"t_min", nan}, {"D_min", nan},
-                       {"t_end", 30.0}, {"D_inf", 0.8}});
-        w.finish("complete");
+        finish_shear_member(w, 10.0, 0.5, 30.0, 0.8);
       }
       members.push_back(member_json(slug, "", {{"Ca", 0.4}}, {}, rel));
     }
@@ -799,10 +787,7 @@ void write_gamma_member(const std::filesystem::path& file, double factor) {
     const double g = i == 1 ? 0.2 : 0.05 * (1.0 + (factor - 1.0) * 0.5 * (1.0 + std::sin(t)));
     w.append({{"kt", t}, {"D_xy", 0.01}, {"theta", 0.4}, {"shear_on", 1.0}, {"gamma_max", g}, {"gamma_min", 0.002}});
   }
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  w.set_markers({{"t_max", nan}, {"D_max", nan}, {"t_stop", 20.0}, {"D_stop", 0.01}, {"t_min", nan}, {"D_min", nan},
-                 {"t_end", 20.0}, {"D_inf", nan}});
-  w.finish("complete");
+  finish_shear_member(w, 20.0, 0.01, 20.0);
 }
 
 TEST_CASE("Dissertation claims: 5.2.1 gamma range, gamma_max varies by at most 1.5 over the shear (Fig. 64)", "[analysis][dissertation]") {
