@@ -23,7 +23,7 @@ bool add_measurement(MeasuredSpeed& speed, const Member& member, const MemberPat
 
 MeasuredSpeed measure_speed(const CampaignSurvey& survey) {
   MeasuredSpeed speed;
-  speed.lengths = PhaseLengths::from_results(survey.layout.root.parent_path());
+  speed.lengths = PhaseLengths::known(survey.layout.root.parent_path());
   for (const auto& m : survey.members) add_measurement(speed, m, survey.layout.member(m));
   return speed;
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "solver/io/member_file.hpp"
+#include "study/plan/shipped_phase_lengths.hpp"
 
 namespace capsule::study {
 
@@ -63,9 +64,10 @@ PhaseLengths::Physics PhaseLengths::physics_of(const nlohmann::json& s) {
 // Distance between two members' physics: differences of the logarithms of the numbers that
 // set a capsule's relaxation and a fixed step for each differing choice. The weights were read
 // off the shipped results, where they predict the phase ends of one campaign from the others
-// (docs/findings/performance.md "Time estimates against measured runs").
+// (docs/findings/performance.md "Time estimates against measured runs"); log Ca weighs 0.3,
+// since expected_kt scales a neighbour's length to the target's Ca.
 double PhaseLengths::distance(const Physics& a, const Physics& b) {
-  double d = std::abs(a.log_Ca - b.log_Ca) + std::abs(a.log_V - b.log_V) + std::abs(a.eta - b.eta) +
+  double d = 0.3 * std::abs(a.log_Ca - b.log_Ca) + std::abs(a.log_V - b.log_V) + std::abs(a.eta - b.eta) +
              std::abs(a.E_b - b.E_b) + 3.0 * std::abs(a.power_n - b.power_n) + std::abs(a.power_K - b.power_K) +
              0.3 * std::abs(a.G - b.G) + 0.3 * std::abs(a.c0 - b.c0);
   if (a.shape != b.shape) d += 0.5;
@@ -101,6 +103,51 @@ PhaseLengths PhaseLengths::from_results(const fs::path& results_dir) {
   return lengths;
 }
 
+bool PhaseLengths::Physics::operator==(const Physics& o) const {
+  return dim == o.dim && log_Ca == o.log_Ca && log_V == o.log_V && eta == o.eta && E_b == o.E_b &&
+         power_n == o.power_n && power_K == o.power_K && G == o.G && c0 == o.c0 && shape == o.shape &&
+         law == o.law && reference_case == o.reference_case && sls_reading == o.sls_reading &&
+         rule[0] == o.rule[0] && rule[1] == o.rule[1];
+}
+
+const PhaseLengths& PhaseLengths::shipped() {
+  static const PhaseLengths table = [] {
+    PhaseLengths t;
+    const auto records = nlohmann::json::parse(shipped_phase_lengths_json());
+    for (const auto& r : records) t.add(r.at("scene"), r.at("shear_kt").get<double>(), r.at("recover_kt").get<double>());
+    return t;
+  }();
+  return table;
+}
+
+PhaseLengths PhaseLengths::known(const fs::path& results_dir) {
+  PhaseLengths lengths = from_results(results_dir);
+  lengths.merge(shipped());
+  return lengths;
+}
+
+bool PhaseLengths::same_records(const PhaseLengths& other) const {
+  if (records_.size() != other.records_.size()) return false;
+  std::vector<bool> used(other.records_.size(), false);
+  for (const auto& r : records_) {
+    bool found = false;
+    for (std::size_t i = 0; i < other.records_.size() && !found; ++i) {
+      const auto& q = other.records_[i];
+      if (!used[i] && q.physics == r.physics && q.kt[0] == r.kt[0] && q.kt[1] == r.kt[1]) used[i] = found = true;
+    }
+    if (!found) return false;
+  }
+  return true;
+}
+
+void PhaseLengths::merge(const PhaseLengths& other) {
+  const std::size_t own = records_.size();
+  for (const auto& r : other.records_) {
+    const auto same = [&r](const Record& q) { return q.physics == r.physics && q.kt[0] == r.kt[0] && q.kt[1] == r.kt[1]; };
+    if (std::none_of(records_.begin(), records_.begin() + static_cast<long>(own), same)) records_.push_back(r);
+  }
+}
+
 std::optional<double> PhaseLengths::expected_kt(const nlohmann::json& scene, bool recovery) const {
   const char* phase = recovery ? "recover" : "shear";
   const nlohmann::json::json_pointer p(std::string("/protocol/") + phase);
@@ -109,10 +156,14 @@ std::optional<double> PhaseLengths::expected_kt(const nlohmann::json& scene, boo
   if (until != "steady" && until != "settled") return std::nullopt;
   const Physics target = physics_of(scene);
   const int k = recovery ? 1 : 0;
+  // A neighbour at another Ca: the part of its length past the steadiness window scaled by the
+  // ratio of the Ca, since the capsule's elastic relaxation time is mu a / E_s = Ca / k.
+  const double window = scene.at(p).value("window_kt", 0.0);
   std::vector<std::pair<double, double>> near;  // distance, length
   for (const auto& r : records_) {
     if (r.physics.dim != target.dim || r.physics.rule[k] != target.rule[k]) continue;
-    near.emplace_back(distance(r.physics, target), std::max(0.1, r.kt[k]));
+    const double beyond = std::max(0.0, r.kt[k] - window) * std::exp(target.log_Ca - r.physics.log_Ca);
+    near.emplace_back(distance(r.physics, target), std::max(0.1, std::min(r.kt[k], window) + beyond));
   }
   if (near.empty()) return std::nullopt;
   const std::size_t n = std::min<std::size_t>(3, near.size());

@@ -22,6 +22,15 @@ class PhaseLengths {
   // Every complete member file under results_dir/<campaign>/members/<member>/member.h5; files
   // that cannot be read, or lack a scene or markers, are left out.
   static PhaseLengths from_results(const std::filesystem::path& results_dir);
+  // The toolkit's own shipped members, built in (shipped_phase_lengths.hpp): what a results
+  // folder without finished neighbours is expected from.
+  static const PhaseLengths& shipped();
+  // Adds the records of `other` that this one does not hold already (the same physics and
+  // lengths: a shipped member also found under the results folder counts once).
+  void merge(const PhaseLengths& other);
+  // What the planner expects from: the finished members under results_dir, then the shipped
+  // members it does not hold.
+  static PhaseLengths known(const std::filesystem::path& results_dir);
 
   // The expected length (kt) of the scene's shear (recovery = false) or recovery phase when it
   // ends on a condition and finished members with the same rule (until, window, tolerance)
@@ -30,6 +39,8 @@ class PhaseLengths {
   std::optional<double> expected_kt(const nlohmann::json& scene, bool recovery) const;
 
   std::size_t size() const { return records_.size(); }
+  // The same records, in any order.
+  bool same_records(const PhaseLengths& other) const;
 
  private:
   // A member's physics as the distance reads it, and its stopping rules ("until window
@@ -39,6 +50,7 @@ class PhaseLengths {
     double log_Ca = 0, log_V = 0, eta = 0, E_b = 0, power_n = 1, power_K = 0, G = 0, c0 = 0;
     std::string shape, law, reference_case, sls_reading;
     std::string rule[2];
+    bool operator==(const Physics& o) const;
   };
   struct Record {
     Physics physics;

@@ -62,7 +62,7 @@ PlanSummary print_plan(const Campaign& plan_campaign, const ResultsLayout& layou
   PlanSummary summary;
   // Pass 1, member by member: the measured speeds of members that ran, and what is pending.
   MeasuredSpeed speed;
-  speed.lengths = PhaseLengths::from_results(layout.root.parent_path());
+  speed.lengths = PhaseLengths::known(layout.root.parent_path());
   std::size_t pending_count = 0;
   bool any_3d = false;
   std::set<std::string> strays = member_folder_names(layout);  // emptied of the members' folders below
