@@ -22,6 +22,8 @@ class Member:
     scene: the canonical scene (every default filled in), a dict.
     status: "complete", "unstable at kt = X: reason", "stopped: reason" or "running".
     attrs: every root attribute (scene as its JSON text).
+    shapes: the stored shapes (output.shapes_at_kt), a list of (kt, positions [nodes x dim] in
+        lattice units, as quantities.SHAPES says); triangles: [m x 3] node indices in 3D, or None.
     """
     path: str
     status: str
@@ -31,6 +33,8 @@ class Member:
     marker_units: dict
     marker_descriptions: dict
     attrs: dict = field(repr=False)
+    shapes: list = field(default_factory=list, repr=False)
+    triangles: np.ndarray = field(default=None, repr=False)
 
     @property
     def complete(self) -> bool:
@@ -99,9 +103,16 @@ def load_member(path) -> Member:
                 about = {key: g[key].attrs[name] for key in ("units", "description")
                          if key in g and name in g[key].attrs}
                 marker_units[name], marker_descriptions[name] = _describe(name, about, MARKERS, path)
+        shapes, triangles = [], None
+        for name, ds in (f["shapes"].items() if "shapes" in f else []):
+            if name == "triangles":
+                triangles = ds[:]
+            else:
+                shapes.append((float(ds.attrs.get("kt", np.nan)), ds[:]))
     series = xr.Dataset(data_vars, coords=coords,
                         attrs={"member_id": attrs.get("member_id", ""), "status": attrs["status"], "path": path})
     return Member(path=path, status=attrs["status"], scene=scene, series=series, markers=markers,
-                  marker_units=marker_units, marker_descriptions=marker_descriptions, attrs=attrs)
+                  marker_units=marker_units, marker_descriptions=marker_descriptions, attrs=attrs,
+                  shapes=shapes, triangles=triangles)
 
 

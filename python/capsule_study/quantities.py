@@ -79,3 +79,10 @@ MARKERS = {
     'D_inf': ('1',
         'D_xy when the recovery ended (the recovered deformation)'),
 }
+
+SHAPES = {
+    'positions': ('lattice',
+        "membrane node positions x, y (and z), one row per node, in lattice units dx from the lattice's origin (the domain centre is at half the grid nx, ny, nz); attribute kt: the time"),
+    'triangles': ('1',
+        'the three node indices (from 0) of each triangle of the 3D mesh'),
+}

@@ -49,6 +49,14 @@ const std::vector<Quantity>& marker_quantities() {
   return table;
 }
 
+const std::vector<Quantity>& shape_quantities() {
+  static const std::vector<Quantity> table = {
+      {"positions", "lattice", "membrane node positions x, y (and z), one row per node, in lattice units dx from the lattice's origin (the domain centre is at half the grid nx, ny, nz); attribute kt: the time"},
+      {"triangles", "1", "the three node indices (from 0) of each triangle of the 3D mesh"},
+  };
+  return table;
+}
+
 const Quantity& quantity(const std::vector<Quantity>& table, const std::string& name) {
   for (const auto& q : table)
     if (name == q.name) return q;

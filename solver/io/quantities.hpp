@@ -1,5 +1,5 @@
 #pragma once
-// What every quantity a member file holds means: one row per series and marker, with its
+// What every quantity a member file holds means: one row per series, marker and shape dataset, with its
 // units and a description (docs/guide/member-files.md "Units and descriptions"). The writer
 // attaches them as the attributes `units` and `description`; the Python package
 // (python/capsule_study/quantities.py) keeps the same table for files written before.
@@ -18,6 +18,8 @@ struct Quantity {
 const std::vector<Quantity>& series_quantities();
 // Every marker under /markers.
 const std::vector<Quantity>& marker_quantities();
+// The datasets under /shapes: "positions" (each /shapes/NNNN) and "triangles".
+const std::vector<Quantity>& shape_quantities();
 
 // The row for `name` in a table; throws std::logic_error naming the quantity when it has none,
 // so that no quantity is written without its units.
