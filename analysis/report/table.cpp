@@ -1,6 +1,8 @@
 #include "analysis/report/table.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -52,6 +54,34 @@ std::string tex_cell(const std::string& s) {
   }
   return out;
 }
+
+// A cell that holds no number and says why: "n/a" or "n/a: reason".
+bool is_missing(const std::string& c) { return c.rfind("n/a", 0) == 0; }
+std::string missing_reason(const std::string& c) { return c.rfind("n/a: ", 0) == 0 ? c.substr(5) : "not available"; }
+bool is_number(const std::string& c) {
+  if (c.empty()) return false;
+  char* end = nullptr;
+  std::strtod(c.c_str(), &end);
+  return end == c.c_str() + c.size();
+}
+std::string cell(const std::vector<std::string>& row, std::size_t i) { return i < row.size() ? row[i] : ""; }
+
+// The columns whose cells are numbers, empty or missing ("n/a: reason"), with at least one
+// missing: in CSV these stay numeric and the reasons go to a column of their own.
+std::vector<bool> numeric_with_reasons(const std::vector<std::string>& header,
+                                       const std::vector<std::vector<std::string>>& rows) {
+  std::vector<bool> out(header.size(), false);
+  for (std::size_t i = 0; i < header.size(); ++i) {
+    bool any_missing = false, only_numbers = true;
+    for (const auto& row : rows) {
+      const std::string c = cell(row, i);
+      if (is_missing(c)) any_missing = true;
+      else if (!c.empty() && !is_number(c)) only_numbers = false;
+    }
+    out[i] = any_missing && only_numbers;
+  }
+  return out;
+}
 }  // namespace
 
 std::string format_number(double x) {
@@ -77,12 +107,24 @@ std::string Table::to_markdown() const {
   return s.str();
 }
 
+// A numeric column never holds text: where it has no value the cell is empty and the column
+// "<name> reason" beside it says why (Markdown and LaTeX keep "n/a: reason" in the cell).
 std::string Table::to_csv() const {
+  const std::vector<bool> split = numeric_with_reasons(header, rows);
   std::ostringstream s;
-  for (std::size_t i = 0; i < header.size(); ++i) s << (i ? "," : "") << csv_cell(header[i]);
+  for (std::size_t i = 0; i < header.size(); ++i) {
+    s << (i ? "," : "") << csv_cell(header[i]);
+    if (split[i]) s << "," << csv_cell(header[i] + " reason");
+  }
   s << "\n";
   for (const auto& row : rows) {
-    for (std::size_t i = 0; i < row.size(); ++i) s << (i ? "," : "") << csv_cell(row[i]);
+    const std::size_t n = std::max(row.size(), header.size());
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::string c = cell(row, i);
+      s << (i ? "," : "");
+      if (i < split.size() && split[i]) s << (is_missing(c) ? "," + csv_cell(missing_reason(c)) : csv_cell(c) + ",");
+      else s << csv_cell(c);
+    }
     s << "\n";
   }
   return s.str();

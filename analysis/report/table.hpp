@@ -1,5 +1,7 @@
 #pragma once
-// A plain table of text cells written as Markdown, CSV (RFC 4180 quoting) and LaTeX.
+// A plain table of text cells written as Markdown, CSV (RFC 4180 quoting) and LaTeX. A cell
+// "n/a: reason" in a column of numbers stays as it is in Markdown and LaTeX; in CSV the cell is
+// empty and the reason goes to a column "<name> reason" beside it (table.cpp).
 #include <string>
 #include <vector>
 

@@ -1,12 +1,14 @@
 #include "solver/io/member_file.hpp"
 
 #include <hdf5.h>
+#include <hdf5_hl.h>
 
 #include <cerrno>
 #include <cstring>
 
 #include <cmath>
 #include <cstdio>
+#include <algorithm>
 #include <filesystem>
 #include <limits>
 #include <stdexcept>
@@ -14,6 +16,7 @@
 #include "solver/io/content_hash.hpp"
 #include "solver/io/hdf5_dataset.hpp"
 #include "solver/io/hdf5_handle.hpp"
+#include "solver/io/quantities.hpp"
 
 namespace capsule::io {
 namespace {
@@ -85,6 +88,15 @@ void digest_attribute(ContentDigest& d, const std::string& name, const nlohmann:
   }
 }
 
+// The attributes `units` and `description` of a quantity (quantities.hpp) on obj, hashed as
+// "<part>@units" and "<part>@description".
+void describe(hid_t obj, const std::string& part, const Quantity& q, ContentDigest& d, const std::string& path) {
+  write_string_attr(obj, "units", q.units, path);
+  write_string_attr(obj, "description", q.description, path);
+  digest_attribute(d, part + "@units", std::string(q.units));
+  digest_attribute(d, part + "@description", std::string(q.description));
+}
+
 // Why H5Fopen refused a file: what the system said (a lock held by another process, no
 // permission), or that it is not an HDF5 file.
 std::string unreadable_file_reason() {
@@ -112,7 +124,10 @@ void MemberWriter::set_scene(const nlohmann::json& scene) { attributes_["scene"]
 
 void MemberWriter::append(const std::map<std::string, double>& row, const std::vector<double>& beta) {
   if (rows_ == 0) {
-    for (const auto& [k, v] : row) columns_.push_back(k);
+    for (const auto& [k, v] : row) {
+      quantity(series_quantities(), k);  // every quantity written has its units: throws when not
+      columns_.push_back(k);
+    }
   } else if (row.size() != columns_.size()) {
     throw std::logic_error("member row " + std::to_string(rows_) + " has " + std::to_string(row.size()) +
                            " columns, the first had " + std::to_string(columns_.size()));
@@ -130,7 +145,10 @@ void MemberWriter::append(const std::map<std::string, double>& row, const std::v
   ++rows_;
 }
 
-void MemberWriter::set_markers(const std::map<std::string, double>& markers) { markers_ = markers; }
+void MemberWriter::set_markers(const std::map<std::string, double>& markers) {
+  for (const auto& [name, v] : markers) quantity(marker_quantities(), name);
+  markers_ = markers;
+}
 
 void MemberWriter::add_shape(double kt, const std::vector<double>& xyz, int dim, const std::vector<int>& triangles) {
   shapes_.push_back({kt, xyz, dim});
@@ -168,12 +186,37 @@ void MemberWriter::write(const std::string& path, const std::string& status) con
       write_matrix(series, "beta", flat.data(), beta_.size(), beta_.front().size(), path);
       digest_doubles(digest, "series/beta", flat.data(), flat.size(), beta_.size(), beta_.front().size());
     }
+    // Each series says what it is, and kt is the dimension scale of every series' rows, so
+    // h5py, xarray and netCDF readers see the time coordinate (HDF5 dimension scales).
+    std::vector<std::string> names = columns_;
+    if (!beta_.empty()) names.push_back("beta");
+    const bool has_kt = std::find(columns_.begin(), columns_.end(), "kt") != columns_.end();
+    Handle kt(has_kt ? H5Dopen2(series, "kt", H5P_DEFAULT) : H5I_INVALID_HID, H5Dclose);
+    if (has_kt) check(H5DSset_scale(kt, "kt"), path, "cannot make series/kt a dimension scale");
+    for (const auto& c : names) {
+      Handle set(H5Dopen2(series, c.c_str(), H5P_DEFAULT), H5Dclose);
+      describe(set, "series/" + c, quantity(series_quantities(), c), digest, path);
+      if (has_kt && c != "kt") check(H5DSattach_scale(set, kt, 0), path, "cannot attach kt to series/" + c);
+    }
   }
   {
     Handle markers(H5Gcreate2(file, "markers", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
     for (const auto& [name, v] : markers_) {
       write_scalar_attr(markers, name, v, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, path);
       digest_attribute(digest, "markers@" + name, v);
+    }
+    // A marker is an attribute, and attributes carry none of their own: its units and
+    // description are the attributes of the same name on /markers/units and /markers/description.
+    if (!markers_.empty()) {
+      Handle units(H5Gcreate2(markers, "units", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+      Handle descriptions(H5Gcreate2(markers, "description", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+      for (const auto& [name, v] : markers_) {
+        const Quantity& q = quantity(marker_quantities(), name);
+        write_string_attr(units, name, q.units, path);
+        write_string_attr(descriptions, name, q.description, path);
+        digest_attribute(digest, "markers/units@" + name, std::string(q.units));
+        digest_attribute(digest, "markers/description@" + name, std::string(q.description));
+      }
     }
   }
   if (!shapes_.empty()) {
@@ -185,6 +228,7 @@ void MemberWriter::write(const std::string& path, const std::string& status) con
       write_matrix(shapes, name, s.xyz.data(), s.xyz.size() / s.dim, s.dim, path);
       Handle set(H5Dopen2(shapes, name, H5P_DEFAULT), H5Dclose);
       write_scalar_attr(set, "kt", s.kt, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, path);
+      describe(set, std::string("shapes/") + name, quantity(shape_quantities(), "positions"), digest, path);
       digest_doubles(digest, std::string("shapes/") + name, s.xyz.data(), s.xyz.size(), s.xyz.size() / s.dim,
                      static_cast<std::uint64_t>(s.dim));
       digest_attribute(digest, std::string("shapes/") + name + "@kt", s.kt);
@@ -195,6 +239,7 @@ void MemberWriter::write(const std::string& path, const std::string& status) con
       if (!set.ok()) fail(path, "cannot create dataset triangles");
       check(H5Dwrite(set, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, triangles_.data()), path, "triangles");
       digest.add("shapes/triangles", 'n', triangles_.data(), triangles_.size() * sizeof(int));
+      describe(set, "shapes/triangles", quantity(shape_quantities(), "triangles"), digest, path);
     }
   }
   write_string_attr(file, kContentHashAttribute, digest.hex(), path);
@@ -348,6 +393,14 @@ std::vector<double> read_doubles(hid_t set, std::vector<hsize_t>& dims, const st
   return out;
 }
 
+// The units and description a series carries, as the writer hashed them (none in files written
+// before they existed; the dimension-scale attributes are HDF5's bookkeeping and not hashed).
+void digest_description(ContentDigest& d, hid_t set, const std::string& part, const std::string& path) {
+  const auto a = read_attributes(set, path);
+  for (const char* key : {"units", "description"})
+    if (a.contains(key)) digest_attribute(d, part + "@" + key, a[key]);
+}
+
 Handle open_dataset(hid_t group, const std::string& name, const std::string& path) {
   Handle set(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose);
   if (!set.ok()) fail(path, "cannot open dataset " + name + ": the file is damaged");
@@ -399,6 +452,7 @@ MemberData read_member(const std::string& path) {
       auto data = read_doubles(set, dims, path, "series/" + name);
       digest_doubles(digest, "series/" + name, data.data(), data.size(), dims.empty() ? 0 : dims[0],
                      dims.size() == 2 ? dims[1] : 0);
+      digest_description(digest, set, "series/" + name, path);
       if (name == "beta" && dims.size() == 2) {
         for (hsize_t r = 0; r < dims[0]; ++r)
           m.beta.emplace_back(data.begin() + r * dims[1], data.begin() + (r + 1) * dims[1]);
@@ -414,6 +468,13 @@ MemberData read_member(const std::string& path) {
       digest_attribute(digest, "markers@" + it.key(), it.value());
       m.markers[it.key()] = it.value().is_number() ? it.value().get<double>() : std::nan("");
     }
+    for (const char* about : {"units", "description"}) {
+      if (H5Lexists(markers, about, H5P_DEFAULT) <= 0) continue;  // files written before they existed
+      Handle group(H5Gopen2(markers, about, H5P_DEFAULT), H5Gclose);
+      auto texts = read_attributes(group, path);
+      for (auto it = texts.begin(); it != texts.end(); ++it)
+        digest_attribute(digest, std::string("markers/") + about + "@" + it.key(), it.value());
+    }
   }
   if (H5Lexists(file, "shapes", H5P_DEFAULT) > 0) {
     Handle shapes(H5Gopen2(file, "shapes", H5P_DEFAULT), H5Gclose);
@@ -426,6 +487,7 @@ MemberData read_member(const std::string& path) {
         m.triangles.resize(dims[0] * dims[1]);
         read_whole_dataset(set, H5T_NATIVE_INT, m.triangles.data(), path, "shapes/triangles");
         digest.add("shapes/triangles", 'n', m.triangles.data(), m.triangles.size() * sizeof(int));
+        digest_description(digest, set, "shapes/triangles", path);
         continue;
       }
       std::vector<hsize_t> dims;
@@ -437,6 +499,7 @@ MemberData read_member(const std::string& path) {
       digest_doubles(digest, "shapes/" + name, s.xyz.data(), s.xyz.size(), dims.empty() ? 0 : dims[0],
                      dims.size() == 2 ? dims[1] : 0);
       if (a.contains("kt")) digest_attribute(digest, "shapes/" + name + "@kt", a["kt"]);
+      digest_description(digest, set, "shapes/" + name, path);
       m.shapes.push_back(std::move(s));
     }
   }

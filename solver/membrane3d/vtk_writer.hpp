@@ -17,11 +17,18 @@ struct VtkField {
   std::vector<double> values;  // components x count, interleaved
 };
 
-// Writes one snapshot as VTK XML PolyData (.vtp, ASCII): points, triangles, the point fields
-// and the cell fields. Written under a temporary name and renamed. Throws on I/O failure or a
-// field of the wrong size.
+// Where the points are measured from and in what unit: a point x is written as
+// (x - origin) / length (the solver writes units of a from the domain centre).
+struct VtkFrame {
+  Vec3 origin = Vec3::Zero();
+  double length = 1.0;
+};
+
+// Writes one snapshot as VTK XML PolyData (.vtp): points, triangles, the point fields and the
+// cell fields, each array binary and zlib-compressed in the appended section (as ParaView's own
+// writer makes them). Written under a temporary name and renamed. Throws on I/O failure or a field of the wrong size.
 void write_vtp(const std::string& path, const Mesh& mesh, const std::vector<VtkField>& point_fields,
-               const std::vector<VtkField>& cell_fields);
+               const std::vector<VtkField>& cell_fields, const VtkFrame& frame = {});
 
 // Writes a ParaView collection (.pvd): one DataSet per (time, file), the file named relative to
 // the collection's folder, so ParaView opens the snapshots as one time series.

@@ -574,7 +574,9 @@ std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, const Ru
         out.add_shape(kt, sim.shape(), 3, triangles);
         if (scene.snapshots == "vtk") {
           const std::string file = snapshot_path(out.final_path(), kt);
-          m3::write_vtp(file, sim.mesh(), sim.snapshot_point_fields(), sim.snapshot_cell_fields());
+          // Points in units of a from the domain centre, as the series centroid_x/y/z.
+          const m3::VtkFrame frame{0.5 * m3::Vec3(scene.grid()[0], scene.grid()[1], scene.grid()[2]), scene.a};
+          m3::write_vtp(file, sim.mesh(), sim.snapshot_point_fields(), sim.snapshot_cell_fields(), frame);
           snapshots.emplace_back(kt, std::filesystem::path(file).filename().string());
           m3::write_pvd(snapshot_base(out.final_path()) + ".pvd", snapshots);  // a time series for ParaView
         }

@@ -94,7 +94,8 @@ TEST_CASE("Ladder report: extrapolation with the observed order, and refusals wi
   for (const char* ext : {".md", ".csv", ".tex"}) CHECK(fs::exists(out / "ladder" / (std::string("ladder_a") + ext)));
   const auto csv = lines(slurp(out / "ladder" / "ladder_a.csv"));
   REQUIRE(csv.size() == 1 + 4 * 2);  // 4 groups x 2 quantities
-  CHECK_THAT(csv[0], StartsWith("group,quantity,a levels,finest a,finest value,extrapolated,order p"));
+  // CSV keeps numbers numeric: a missing finest value is an empty cell, its reason beside it.
+  CHECK_THAT(csv[0], StartsWith("group,quantity,a levels,finest a,finest value,finest value reason,extrapolated,"));
 
   const auto j = nlohmann::json::parse(slurp(out / "fits.json"));
   REQUIRE(j["ladders"].size() == 1);
@@ -185,7 +186,7 @@ TEST_CASE("Accuracy report: errors against a ladder or given reference, Pareto s
   const auto ref = lines(slurp(out / "reference.csv"));
   CHECK_THAT(row_starting(ref, "sphere (Ca = 0.05),D_stop,0.3,"), Contains("ladder ladder_a: extrapolated from levels 14, 10, 7 (p = 1, observed)"));
   CHECK_THAT(row_starting(ref, "sphere (Ca = 0.05),response.k_tau_s,0.5,"), Contains("given in the block"));
-  CHECK_THAT(row_starting(ref, "other (Ca = 0.2),D_stop,n/a,"), Contains("no group of this physical case"));
+  CHECK_THAT(row_starting(ref, "other (Ca = 0.2),D_stop,,not available,"), Contains("no group of this physical case"));
 
   // The non-dominated set for D_stop: a = 5, 7, 10 and the tau = 0.8 setting; a = 14 is dominated.
   const auto j = nlohmann::json::parse(slurp(fs::path(req.out_dir) / "fits.json"));
@@ -199,8 +200,9 @@ TEST_CASE("Accuracy report: errors against a ladder or given reference, Pareto s
   // No reference: reported per member with the reason, never a number.
   const auto other_rows = lines(slurp(out / "case_other.csv"));
   REQUIRE(other_rows.size() == 1 + 2);
-  CHECK_THAT(other_rows[1], Contains("n/a: no reference"));
-  CHECK_THAT(slurp(out / "case_other.csv"), Contains("n/a: no wall_seconds or threads in the member file"));
+  CHECK_THAT(other_rows[1], Contains(",0.38,,no reference: "));  // D_stop, its error empty, the reason
+  CHECK_THAT(other_rows[2], Contains(",3.43,,not available,,no wall_seconds or threads in the member file,"));
+  CHECK_THAT(slurp(out / "case_other.md"), Contains("n/a: no wall_seconds or threads in the member file"));
   CHECK_THAT(row_starting(lines(slurp(out / "pareto.csv")), "other (Ca = 0.2),D_stop,"),
              Contains("n/a: no member with both a cost and an error"));
   CHECK(files_with_nan(req.out_dir) == std::vector<std::string>{});

@@ -94,8 +94,11 @@ TEST_CASE("write_report writes all three table formats with the expected rows", 
   CHECK_THAT(csv[0], Contains("case,eta,member,response.k_tau_s"));
   CHECK_THAT(csv[1], StartsWith("sphere,0,"));
   // Both at eta = 8, so ordered by slug: "missing" before "unstable".
-  CHECK_THAT(csv[7], StartsWith("sphere,8,missing,n/a: member file missing"));
-  CHECK_THAT(csv[8], StartsWith("sphere,8,unstable,n/a: member not complete: unstable at kt = 3.5"));
+  // The fitted time stays numeric: empty, with the reason in the column beside it.
+  CHECK_THAT(csv[0], Contains(",response.k_tau_s,response.k_tau_s reason,"));
+  CHECK_THAT(csv[7], StartsWith("sphere,8,missing,,member file missing"));
+  CHECK_THAT(csv[8], StartsWith("sphere,8,unstable,,member not complete: unstable at kt = 3.5"));
+  CHECK_THAT(slurp(out / "tables/times_vs_eta.md"), Contains("| n/a: member file missing"));
   const auto md = lines(slurp(out / "tables/times_vs_eta.md"));
   CHECK(md.size() == 1 + 2 + 8);  // title, header + rule, 8 rows
   const std::string tex = slurp(out / "tables/times_vs_eta.tex");

@@ -18,3 +18,23 @@ TEST_CASE("Tables quote and escape their cells", "[analysis]") {
   CHECK(format_number(0.123456789) == "0.123457");
   CHECK(format_number(std::nan("")).empty());
 }
+
+TEST_CASE("A column of numbers stays numeric in CSV, the reason for a missing value beside it", "[analysis]") {
+  Table t;
+  t.header = {"member", "k_tau_s", "±95%", "note"};
+  t.rows = {{"a", "0.14", "0.004", "n/a: text column"},
+            {"b", "n/a: the model does not describe the data: R^2 = 0.3 < 0.5", "", "ok"},
+            {"c", "1e-05", "", "n/a"},
+            {"d", "n/a", "", ""}};
+  CHECK(t.to_csv() ==
+        "member,k_tau_s,k_tau_s reason,±95%,note\n"
+        "a,0.14,,0.004,n/a: text column\n"
+        "b,,the model does not describe the data: R^2 = 0.3 < 0.5,,ok\n"
+        "c,1e-05,,,n/a\n"
+        "d,,not available,,\n");
+  // Markdown and LaTeX, read by people, keep the reason in the cell.
+  CHECK_THAT(t.to_markdown(), Contains("| b | n/a: the model does not describe the data"));
+  // A table without a missing value is written as before: no reason column.
+  t.rows = {{"a", "0.14", "0.004", "x"}};
+  CHECK(t.to_csv() == "member,k_tau_s,±95%,note\na,0.14,0.004,x\n");
+}

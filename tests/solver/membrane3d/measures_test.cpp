@@ -1,8 +1,12 @@
 // Shape measures: inertia-equivalent ellipsoid (38), extent deformation, phase angles
 // (91)-(92), mesh quality, VTK snapshots.
 #include <catch2/catch.hpp>
+#include <zlib.h>
+
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <numbers>
@@ -102,6 +106,31 @@ TEST_CASE("VTK XML snapshot holds the mesh and its fields; a field of the wrong 
   CHECK(all.find("Name=\"kappa\" NumberOfComponents=\"1\"") != std::string::npos);
   CHECK(all.find("<CellData>") != std::string::npos);
   std::remove(path.c_str());
+  {  // Binary and compressed: the appended section holds the points, decoded as VTK does
+     // (UInt64 header: blocks, block size, last partial size, compressed sizes; zlib blocks),
+     // in the frame asked for.
+    const VtkFrame frame{Vec3(1.0, -2.0, 0.5), 4.0};
+    write_vtp(path, m, {}, {}, frame);
+    std::ifstream in(path, std::ios::binary);
+    const std::string file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    CHECK(file.find("compressor=\"vtkZLibDataCompressor\"") != std::string::npos);
+    CHECK(file.find("format=\"ascii\"") == std::string::npos);
+    const std::size_t start = file.find("<AppendedData encoding=\"raw\">");
+    REQUIRE(start != std::string::npos);
+    const char* data = file.data() + file.find('_', start) + 1;
+    std::uint64_t header[4];
+    std::memcpy(header, data, sizeof header);
+    REQUIRE(header[0] == 1);                      // 42 x 3 doubles: one block
+    CHECK(header[2] == 42 * 3 * sizeof(double));  // the last (only) block is partial
+    std::vector<double> xyz(42 * 3);
+    uLongf size = xyz.size() * sizeof(double);
+    REQUIRE(uncompress(reinterpret_cast<Bytef*>(xyz.data()), &size, reinterpret_cast<const Bytef*>(data + sizeof header),
+                       header[3]) == Z_OK);
+    REQUIRE(size == xyz.size() * sizeof(double));
+    for (int i = 0; i < 42; ++i)
+      for (int k = 0; k < 3; ++k) CHECK(xyz[3 * i + k] == Approx((m.x[i][k] - frame.origin[k]) / frame.length));
+    std::remove(path.c_str());
+  }
   CHECK_THROWS(write_vtp(path, m, {{"k", 1, {1.0}}}, {}));
   CHECK_FALSE(std::ifstream(path).good());
   CHECK_FALSE(std::ifstream(path + ".tmp").good());  // nothing left behind
