@@ -28,19 +28,30 @@ bool same_file(const fs::path& a, const fs::path& b) {
   return !ec && same;
 }
 
-// A campaign file other than `self` that holds `recorded` (the campaign as last run), searched in
-// `folders` (recursively, .json files of a few hundred kB at most); "" when there is none.
-std::string other_file_holding(const std::string& recorded, const fs::path& self, const std::vector<fs::path>& folders) {
-  for (const auto& folder : folders) {
-    std::error_code ec;
-    if (!fs::is_directory(folder, ec)) continue;
-    for (auto it = fs::recursive_directory_iterator(folder, fs::directory_options::skip_permission_denied, ec);
-         !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
-      const fs::path& p = it->path();
-      if (p.extension() != ".json" || !it->is_regular_file(ec) || same_file(p, self)) continue;
-      if (it->file_size(ec) > (1u << 20)) continue;
-      if (same_campaign_text(read_file_text(p), recorded)) return fs::absolute(p).lexically_normal().string();
+bool is_other_campaign_file(const fs::directory_entry& e, const fs::path& self, const std::string& recorded) {
+  std::error_code ec;
+  const fs::path& p = e.path();
+  if (p.extension() != ".json" || !e.is_regular_file(ec) || same_file(p, self)) return false;
+  if (e.file_size(ec) > (1u << 20)) return false;  // campaign files are a few kB
+  return same_campaign_text(read_file_text(p), recorded);
+}
+
+// A campaign file other than `self` that holds `recorded` (the campaign as last run): in the
+// folder of `self`, or anywhere under `campaigns` but inside `results` (whose campaign.json files
+// are records, not campaign files); "" when there is none.
+std::string other_file_holding(const std::string& recorded, const fs::path& self, const fs::path& campaigns,
+                               const fs::path& results) {
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(self.parent_path(), fs::directory_options::skip_permission_denied, ec))
+    if (is_other_campaign_file(e, self, recorded)) return fs::absolute(e.path()).lexically_normal().string();
+  if (!fs::is_directory(campaigns, ec)) return "";
+  for (auto it = fs::recursive_directory_iterator(campaigns, fs::directory_options::skip_permission_denied, ec);
+       !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    if (it->is_directory(ec) && same_file(it->path(), results)) {
+      it.disable_recursion_pending();
+      continue;
     }
+    if (is_other_campaign_file(*it, self, recorded)) return fs::absolute(it->path()).lexically_normal().string();
   }
   return "";
 }
@@ -65,8 +76,7 @@ void require_same_campaign(const Campaign& campaign, const ResultsLayout& layout
   if (!recorded.empty() && recorded != here && fs::exists(recorded, ec) && !same_file(recorded, here)) refuse(recorded);
   // Another file that holds the campaign as last run: the maker, whatever its path.
   const fs::path results_dir = layout.root.parent_path();
-  const std::string owner = other_file_holding(
-      recorded_text, here, {fs::path(here).parent_path(), results_dir.parent_path() / "campaigns"});
+  const std::string owner = other_file_holding(recorded_text, here, results_dir.parent_path() / "campaigns", results_dir);
   if (!owner.empty()) refuse(owner);
 }
 

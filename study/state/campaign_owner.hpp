@@ -7,8 +7,8 @@
 // Which file made the folder is known from its content, not only from the git-ignored
 // campaign_source (a fresh clone has none, and campaign files move): when campaign.json (the
 // campaign as last run, shipped with the results) differs from the campaign given, another
-// campaign file that still holds exactly campaign.json's campaign (in the given file's folder or
-// under the campaigns/ folder beside the results folder) is the owner, and the given file is a
+// campaign file that still holds exactly campaign.json's campaign (in the given file's folder, or
+// anywhere under the campaigns/ folder beside the results folder) is the owner, and the given file is a
 // different one. Found nowhere, the given file is taken for the owner, edited.
 #include "study/campaign/campaign.hpp"
 #include "study/state/results_layout.hpp"
