@@ -20,7 +20,9 @@ namespace {
 const char* const exit_codes =
     "Exit status: 0 complete (check: the scene is valid), 1 the solver failed or a file could not be\n"
     "written, 2 bad scene, output path or command line (nothing was run), 3 the member ended unstable,\n"
-    "4 stopped by SIGTERM, SIGINT or SIGUSR1 after writing a restart point (the same command continues).";
+    "4 stopped by SIGTERM, SIGINT or SIGUSR1 after writing a restart point (the same command continues),\n"
+    "5 interrupted by a full disk or a lack of memory (the same command continues once there is room),\n"
+    "6 the member's lock was taken over by another run: nothing of the member was touched.";
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -102,10 +104,10 @@ int main(int argc, char** argv) {
   app.add_option("--id", opt.member_id, "member id to record (set by study)");
   app.add_flag("-q,--quiet", opt.quiet, "no progress lines");
   app.add_option("--progress-seconds", opt.progress_seconds, "wall seconds between progress lines")
-      ->capture_default_str()->check(CLI::PositiveNumber);
+      ->capture_default_str()->check(capsule::cli::finite_number_in(0, 1e7));
   app.add_option("--checkpoint-seconds", opt.checkpoint.every_seconds,
                  "wall seconds between restart points (OUT.restart; 0 = none); rerunning the same command continues from the last one")
-      ->capture_default_str()->check(CLI::NonNegativeNumber);
+      ->capture_default_str()->check(capsule::cli::finite_number_in(0, 1e7, /*low_included=*/true));
   // Hidden test options: a restart point at a given step, and an end as if killed.
   app.add_option("--checkpoint-at-step", opt.checkpoint.at_step)->group("")->check(CLI::NonNegativeNumber);
   app.add_option("--stop-after-step", opt.checkpoint.stop_after_step)->group("")->check(CLI::NonNegativeNumber);

@@ -26,6 +26,29 @@ inline CLI::Validator whole_number_at_least(long minimum) {
       description);
 }
 
+// A finite number in (low, high] (or [low, high] with low_included): "nan", "inf" and 1e300
+// seconds read "must be a number in (0, 1e+07], got \"nan\"" instead of passing a sign check.
+inline CLI::Validator finite_number_in(double low, double high, bool low_included = false) {
+  const auto bound = [](double x) {
+    std::string t = std::to_string(x);
+    t.erase(t.find_last_not_of('0') + 1);
+    if (!t.empty() && t.back() == '.') t.pop_back();
+    return t;
+  };
+  const std::string range = (low_included ? "[" : "(") + bound(low) + ", " + bound(high) + "]";
+  return CLI::Validator(
+      [low, high, low_included, range](std::string& text) -> std::string {
+        errno = 0;
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        const bool inside = low_included ? value >= low : value > low;
+        if (text.empty() || *end != '\0' || errno == ERANGE || !(inside && value <= high))
+          return "must be a number in " + range + ", got \"" + text + "\"";
+        return "";
+      },
+      "NUMBER in " + range);
+}
+
 // Parses argv; on a command-line error prints CLI11's message and returns 2 (0 for --help
 // and --version). Returns -1 when parsing succeeded and the program should go on.
 inline int parse_or_exit_code(CLI::App& app, int argc, const char* const* argv) {

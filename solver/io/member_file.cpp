@@ -12,11 +12,13 @@
 #include <filesystem>
 #include <limits>
 #include <stdexcept>
+#include <system_error>
 
 #include "solver/io/content_hash.hpp"
 #include "solver/io/hdf5_dataset.hpp"
 #include "solver/io/hdf5_handle.hpp"
 #include "solver/io/quantities.hpp"
+#include "solver/io/write_guard.hpp"
 
 namespace capsule::io {
 namespace {
@@ -249,7 +251,8 @@ void MemberWriter::write(const std::string& path, const std::string& status) con
 void MemberWriter::write_then_rename(const std::string& status, const std::string& to) const {
   // Write beside, then rename: the file at `to` is always a whole one. A failed write (disk
   // full, say) names errno's reason and leaves no temporary file behind.
-  const std::string tmp = partial_path() + ".tmp";
+  const std::string tmp = own_temporary(partial_path());
+  require_ownership("write " + partial_path());
   errno = 0;
   try {
     write(tmp, status);
@@ -257,7 +260,15 @@ void MemberWriter::write_then_rename(const std::string& status, const std::strin
     const int err = errno;
     std::error_code ec;
     std::filesystem::remove(tmp, ec);
-    throw std::runtime_error(std::string(e.what()) + (err != 0 ? std::string(" (") + std::strerror(err) + ")" : ""));
+    if (err != 0) throw std::system_error(err, std::generic_category(), e.what());  // the cause stays a code
+    throw;
+  }
+  try {
+    require_ownership("rename over " + to);
+  } catch (const OwnershipLost&) {
+    std::error_code ec;
+    std::filesystem::remove(tmp, ec);  // its own temporary only
+    throw;
   }
   std::filesystem::rename(tmp, to);
 }
@@ -266,6 +277,7 @@ void MemberWriter::checkpoint() { write_then_rename("running", partial_path()); 
 
 void MemberWriter::finish(const std::string& status) {
   write_then_rename(status, partial_path());
+  require_ownership("rename " + partial_path() + " to " + final_path_);
   std::filesystem::rename(partial_path(), final_path_);
 }
 
@@ -421,7 +433,11 @@ std::vector<std::string> children(hid_t group) {
   return list.names;
 }
 
+bool g_accept_legacy = false;
+
 }  // namespace
+
+void accept_files_without_content_hash(bool accept) { g_accept_legacy = accept; }
 
 MemberData read_member(const std::string& path) {
   static QuietHdf5 quiet;
@@ -503,7 +519,10 @@ MemberData read_member(const std::string& path) {
       m.shapes.push_back(std::move(s));
     }
   }
-  // Files written before the content hash existed have none and are read as they are.
+  // Files written before the content hash existed have none: read only when asked for.
+  if (!m.attributes.contains(kContentHashAttribute) && !g_accept_legacy)
+    fail(path, "no content hash, so its content cannot be checked (the hash was removed, or the file predates it); "
+               "read it anyway only with --legacy-member-files");
   if (m.attributes.contains(kContentHashAttribute)) {
     const auto& recorded = m.attributes[kContentHashAttribute];
     if (!recorded.is_string() || recorded.get<std::string>() != digest.hex())
@@ -543,6 +562,7 @@ MemberStatus read_member_status(const std::string& path) {
   if (a.contains("code_version") && a["code_version"].is_string()) s.code_version = a["code_version"];
   if (a.contains("physics_version") && a["physics_version"].is_string()) s.physics_version = a["physics_version"];
   if (a.contains("tau") && a["tau"].is_number()) s.tau = a["tau"].get<double>();
+  if (a.contains(kContentHashAttribute) && a[kContentHashAttribute].is_string()) s.content_hash = a[kContentHashAttribute];
   if (a.contains("scene") && a["scene"].is_string())
     s.scene = nlohmann::json::parse(a["scene"].get<std::string>(), nullptr, /*allow_exceptions=*/false);
   if (s.scene.is_discarded()) s.scene = nullptr;

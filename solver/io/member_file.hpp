@@ -86,8 +86,14 @@ struct MemberData {
 };
 
 // Reads a member file (final or .partial). Throws std::runtime_error naming the file, also
-// when a dataset's checksum or the file's content hash does not match (the file was damaged).
+// when a dataset's checksum or the file's content hash does not match (the file was damaged),
+// and when the file has no content hash at all (one whose hash was deleted reads like a file
+// from before hashes existed), unless legacy files were accepted below.
 MemberData read_member(const std::string& path);
+
+// Accept member files without a content hash (written before it existed), for the rest of this
+// process; `study report --legacy-member-files` asks for it. Off by default.
+void accept_files_without_content_hash(bool accept);
 
 // What is wrong with a complete member's series, "" when nothing: every member writes kt and
 // D_xy (what every analysis reads), and every series has one row per output time. A file from before the content
@@ -104,6 +110,7 @@ struct MemberStatus {
   long threads = 0;
   // Provenance: the build that wrote it (a `-dirty` one is not reproducible) and its physics.
   std::string code_version, physics_version;
+  std::string content_hash;  // as recorded ("" when none); read_member checks it against the content
   // The fluid's relaxation time the member ran with (the scene's, or the rule's when it is 0).
   double tau = std::numeric_limits<double>::quiet_NaN();
   // How long its phases ran (markers t_stop and t_end, NaN when absent), and its canonical scene

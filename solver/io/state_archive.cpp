@@ -5,9 +5,11 @@
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
+#include <system_error>
 
 #include "solver/io/hdf5_dataset.hpp"
 #include "solver/io/hdf5_handle.hpp"
+#include "solver/io/write_guard.hpp"
 
 namespace capsule::io {
 namespace {
@@ -91,7 +93,8 @@ std::size_t StateArchive::payload_bytes() const {
 
 void StateArchive::write(const std::string& path) const {
   silence_hdf5_errors();
-  const std::string tmp = path + ".tmp";
+  const std::string tmp = own_temporary(path);
+  require_ownership("write " + path);
   errno = 0;
   try {
     Hdf5Handle file = create_checked_file(tmp);
@@ -106,9 +109,16 @@ void StateArchive::write(const std::string& path) const {
     const int err = errno;
     std::error_code ec;
     std::filesystem::remove(tmp, ec);
-    throw std::runtime_error(std::string(e.what()) + (err != 0 ? std::string(" (") + std::strerror(err) + ")" : ""));
+    if (err != 0) throw std::system_error(err, std::generic_category(), e.what());  // the cause stays a code
+    throw;
   }
   std::error_code ec;
+  try {
+    require_ownership("rename over " + path);
+  } catch (const OwnershipLost&) {
+    std::filesystem::remove(tmp, ec);  // its own temporary only
+    throw;
+  }
   std::filesystem::rename(tmp, path, ec);
   if (ec) fail(path, "cannot rename " + tmp + ": " + ec.message());
 }

@@ -11,6 +11,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "solver/io/write_guard.hpp"
 #include "solver/run/checkpoint.hpp"
 
 namespace capsule {
@@ -37,11 +38,16 @@ std::string host() {
 
 namespace {
 void write_json_atomically(const std::string& file, const nlohmann::json& j) {
-  const std::string tmp = file + ".tmp";
+  io::require_ownership("write " + file);
+  const std::string tmp = io::own_temporary(file);
   {
     std::ofstream out(tmp, std::ios::trunc);
     out << j.dump() << "\n";
-    if (!out) return;  // progress is best effort: a full disk must not end the member
+    if (!out) {  // progress is best effort: a full disk must not end the member
+      std::error_code ec;
+      std::filesystem::remove(tmp, ec);
+      return;
+    }
   }
   std::error_code ec;
   std::filesystem::rename(tmp, file, ec);

@@ -8,10 +8,15 @@
 #include <ctime>
 #include <filesystem>
 #include <iostream>
+#include <cerrno>
+#include <cstdlib>
+#include <new>
+#include <system_error>
 
 #include "build_info.hpp"
 #include "solver/io/member_file.hpp"
 #include "solver/io/output_path.hpp"
+#include "solver/io/write_guard.hpp"
 #include "solver/scene/memory_estimate.hpp"
 #include "solver/run/progress.hpp"
 #include "solver/run/run_control.hpp"
@@ -38,6 +43,33 @@ std::string host_name() {
   return buf;
 }
 
+// What ran out, when an error is a full disk or a lack of memory ("" when it is neither): such a
+// member is interrupted, not ended; its .partial and last good restart point are kept.
+std::string exhausted_resource(const std::exception& e) {
+  if (dynamic_cast<const std::bad_alloc*>(&e) != nullptr) return "out of memory";
+  if (const auto* s = dynamic_cast<const std::system_error*>(&e)) {
+    const int code = s->code().value();
+    if (s->code().category() == std::generic_category() || s->code().category() == std::system_category()) {
+      if (code == ENOSPC || code == EDQUOT) return "no space left on the disk";
+      if (code == ENOMEM) return "out of memory";
+    }
+  }
+  return "";
+}
+
+struct ResourcesExhausted {
+  std::string why;
+};
+
+// Ends the process at once with exit 5: HDF5 keeps a file whose flush failed open, and its
+// handler at exit tries to close it again and crashes (SIGSEGV in H5F__close_cb, seen on a full
+// tmpfs), which would turn a resumable member into one killed by a signal.
+[[noreturn]] void end_interrupted() {
+  std::cerr.flush();
+  std::cout.flush();
+  std::_Exit(kExitResourcesExhausted);
+}
+
 }  // namespace
 
 int run_member(const RunOptions& options) {
@@ -57,6 +89,7 @@ int run_member(const RunOptions& options) {
     return 2;
   }
   install_stop_signals();
+  io::guard_writes_from_environment();
   if (options.threads > 0) omp_set_num_threads(options.threads);
   const long threads = options.threads > 0 ? options.threads : omp_get_max_threads();
 
@@ -116,6 +149,7 @@ int run_member(const RunOptions& options) {
       } catch (const RestartRefused&) {
         throw;
       } catch (const std::exception& e) {
+        if (const std::string cause = exhausted_resource(e); !cause.empty()) throw ResourcesExhausted{cause + ": " + e.what()};
         status = std::string("stopped: ") + e.what();
       }
     };
@@ -154,7 +188,19 @@ int run_member(const RunOptions& options) {
     if (status == "complete") return 0;
     if (status.rfind("unstable", 0) == 0) return 3;
     return 1;
+  } catch (const io::OwnershipLost& lost) {
+    std::cerr << "capsule: " << lost.why << "; it stops here and leaves the member's files to their owner\n";
+    return kExitOwnershipLost;
+  } catch (const ResourcesExhausted& r) {
+    std::cerr << "capsule: interrupted, " << r.why << "; the .partial and the last whole restart point are kept: "
+              << "the same command continues from it once there is room\n";
+    end_interrupted();
   } catch (const std::exception& e) {
+    if (const std::string cause = exhausted_resource(e); !cause.empty()) {
+      std::cerr << "capsule: interrupted, " << cause << ": " << e.what()
+                << "; the last whole restart point is kept: the same command continues from it once there is room\n";
+      end_interrupted();
+    }
     std::cerr << "capsule: " << e.what() << "\n";
     return 1;
   }

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include "solver/app/cli_support.hpp"
+#include "solver/io/member_file.hpp"
 #include "solver/scene/scene.hpp"
 #include "study/report/analysis_commands.hpp"
 #include "study/campaign/campaign_error.hpp"
@@ -70,7 +71,7 @@ int main_body(int argc, char** argv) {
       ->capture_default_str()->check(count);
   run->add_option("--checkpoint-seconds", run_request.checkpoint_seconds,
                   "wall seconds between a member's restart points (capsule --checkpoint-seconds)")
-      ->capture_default_str()->check(CLI::PositiveNumber);
+      ->capture_default_str()->check(capsule::cli::finite_number_in(0, 1e7));
   run->add_flag("--rerun-unstable", run_request.rerun_unstable, "also rerun members that ended unstable");
   run->add_flag("--allow-dirty", run_request.allow_dirty,
                 "run even when this build's sources differ from every commit (recorded in run.json)");
@@ -98,7 +99,7 @@ int main_body(int argc, char** argv) {
                          "start the member only if the capsule binary reports this code version (`capsule version`)");
   run_member->add_option("--checkpoint-seconds", member_request.checkpoint_seconds,
                          "wall seconds between restart points")
-      ->capture_default_str()->check(CLI::PositiveNumber);
+      ->capture_default_str()->check(capsule::cli::finite_number_in(0, 1e7));
 
   std::string status_file;
   bool status_as_json = false;
@@ -118,6 +119,11 @@ int main_body(int argc, char** argv) {
                    "write the report even when some member files cannot be read (report/PARTIAL.md names them); "
                    "without it such a report is refused and the previous one kept");
 
+  bool legacy_member_files = false;
+  const std::string legacy_help =
+      "also read member files without a content hash (written before it existed); their content cannot be checked";
+  report->add_flag("--legacy-member-files", legacy_member_files, legacy_help);
+
   std::vector<std::string> compare_files;
   bool table2 = false;
   auto* compare = app.add_subcommand("compare", "compare the fits of several campaigns' reports");
@@ -132,6 +138,7 @@ int main_body(int argc, char** argv) {
   thesis->add_option("--results", results_dir, "results folder (reads <results>/<campaign>/report/fits.json)")
       ->capture_default_str();
   thesis->add_option("-o,--output", thesis_out, "file to write (default: <results>/THESIS.md)");
+  thesis->add_flag("--legacy-member-files", legacy_member_files, legacy_help);
 
   std::vector<std::string> export_files;
   bool slurm = false;
@@ -158,7 +165,7 @@ int main_body(int argc, char** argv) {
   exporter->add_option("--checkpoint-seconds", slurm_options.checkpoint_seconds,
                        "wall seconds between a member's restart points (a task also writes one 120 s before its time "
                        "limit)")
-      ->capture_default_str()->check(CLI::PositiveNumber);
+      ->capture_default_str()->check(capsule::cli::finite_number_in(0, 1e7));
   exporter->add_option("--array-max", slurm_options.array_max,
                        "members per script: an array over this many is split into several (Slurm's MaxArraySize, "
                        "default 1001, bounds the task ids)")
@@ -173,6 +180,7 @@ int main_body(int argc, char** argv) {
   exporter->add_option("--results", results_dir, "results folder")->capture_default_str();
 
   if (const int code = capsule::cli::parse_or_exit_code(app, argc, argv); code >= 0) return code;
+  capsule::io::accept_files_without_content_hash(legacy_member_files);
 
   if (*plan) {
     const std::vector<std::string> files = campaign_files_of(plan_files);

@@ -200,6 +200,8 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
                                 [&](std::size_t i) { return std::find(copied.begin(), copied.end(), i) != copied.end(); }),
                  to_run.end());
   }
+  // Under each member's lock, after reading its file again: a Slurm task may have finished one since the survey.
+  to_run = clear_members_to_rerun(survey, to_run, request.rerun_unstable, request.rerun_stopped);
   for (std::size_t i : to_run) any_3d = any_3d || survey.members[i].scene.at("dim").get<int>() == 3;
 
   // A run.json without "finished" is the record of a run that was killed: keep it.
@@ -230,11 +232,7 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
     record["hosts_file"] = request.hosts_file;
 
     std::string job_list;
-    for (std::size_t i : to_run) {
-      const MemberPaths p = survey.layout.member(survey.members[i]);
-      clear_for_rerun(p);  // a stale .partial or failed attempt is rerun from scratch
-      job_list += p.dir.string() + "\n";
-    }
+    for (std::size_t i : to_run) job_list += survey.layout.member(survey.members[i]).dir.string() + "\n";
     write_file_atomically(survey.layout.jobs_file(), job_list);
     write_member_wrapper(survey.layout.wrapper(),
                          {survey.campaign.name, own_executable(), capsule_binary, request.checkpoint_seconds, capsule_version});

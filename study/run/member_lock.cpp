@@ -7,6 +7,8 @@
 #include <cerrno>
 #include <cstring>
 #include <chrono>
+#include <cstdio>
+#include <random>
 #include <nlohmann/json.hpp>
 
 #include "study/state/member_state.hpp"
@@ -33,13 +35,27 @@ std::optional<LockOwner> read_owner(const fs::path& file) {
     o.host = j.value("host", std::string());
     o.pid = j.value("pid", 0L);
     o.started = j.value("started", std::string());
+    o.token = j.value("token", std::string());
+    o.process_start = j.value("process_start", -1LL);
   }
   return o;
 }
 
 bool owner_alive(const LockOwner& o) {
-  if (!o.host.empty() && o.host == host_name()) return process_alive(o.pid);
-  return o.age_seconds < kStaleSeconds;  // another host (or unknown): alive while it keeps touching
+  if (o.age_seconds >= kStaleSeconds) return false;  // silent: dead or stopped, on any host
+  if (!o.host.empty() && o.host == host_name()) {
+    if (!process_alive(o.pid)) return false;
+    // The pid of a process that started at another time: reused by another process.
+    if (o.process_start >= 0 && process_start_ticks(o.pid) != o.process_start) return false;
+  }
+  return true;
+}
+
+std::string new_token() {
+  std::random_device device;
+  char text[33];
+  std::snprintf(text, sizeof text, "%08x%08x%08x%08x", device(), device(), device(), device());
+  return text;
 }
 
 }  // namespace
@@ -54,7 +70,11 @@ std::optional<LockOwner> live_lock_owner(const fs::path& member_dir) {
 
 MemberLock::MemberLock(const fs::path& member_dir) : file_(member_lock_file(member_dir)) {
   const std::string me = host_name();
-  const nlohmann::json record = {{"host", me}, {"pid", static_cast<long>(::getpid())}, {"started", utc_now_iso8601()}};
+  const nlohmann::json record = {{"host", me},
+                                 {"pid", static_cast<long>(::getpid())},
+                                 {"started", utc_now_iso8601()},
+                                 {"token", new_token()},
+                                 {"process_start", process_start_ticks(::getpid())}};
   // Written whole under a name of our own, then linked to the lock's name: link() fails with
   // EEXIST when the lock exists, so exactly one process gets it.
   const fs::path mine = file_.string() + "." + me + "." + std::to_string(::getpid());
@@ -97,18 +117,25 @@ MemberLock::MemberLock(const fs::path& member_dir) : file_(member_lock_file(memb
     break;
   }
   ::unlink(mine.c_str());
-  if (held_) owner_ = LockOwner{me, static_cast<long>(::getpid()), record["started"], 0};
+  if (held_)
+    owner_ = LockOwner{me, static_cast<long>(::getpid()), record["started"], record["token"], record["process_start"], 0};
 }
 
 MemberLock::~MemberLock() {
-  if (!held_) return;
   // Only our own: a lock another process took over (after we were silent too long) stays.
-  const auto o = read_owner(file_);
-  if (o && o->host == owner_.host && o->pid == owner_.pid) ::unlink(file_.c_str());
+  if (still_held()) ::unlink(file_.c_str());
 }
 
-void MemberLock::refresh() const {
-  if (held_) ::utimensat(AT_FDCWD, file_.c_str(), nullptr, 0);
+bool MemberLock::still_held() const {
+  if (!held_) return false;
+  const auto o = read_owner(file_);
+  return o && o->token == owner_.token;
+}
+
+bool MemberLock::refresh() const {
+  if (!still_held()) return false;
+  ::utimensat(AT_FDCWD, file_.c_str(), nullptr, 0);
+  return true;
 }
 
 }  // namespace capsule::study

@@ -1,10 +1,13 @@
 #pragma once
 // One run of a member at a time, whichever engine started it (GNU Parallel here or over SSH, a
 // Slurm array task, a user by hand): <member>/member.lock, made atomically with link(2) (atomic
-// on NFS as well), holds the owner's host, pid and start. A lock is held while its owner lives:
-// on this host, while its pid is a live process; on another, while the owner keeps the file's
-// modification time fresh (it touches it every kLockHeartbeatSeconds; silent for kStaleSeconds
-// means dead). A stale lock is taken over; a held one is left alone.
+// on NFS as well), holds the owner's host, pid, start, the process's start time and a token of
+// its own. A lock is held while its owner keeps the file's modification time fresh (it touches it
+// every kLockHeartbeatSeconds; silent for kStaleSeconds means dead), on this host also only while
+// its pid is a live process that started when the owner did (a pid reused by another process
+// holds nothing). A stale lock is taken over; a held one is left alone. An owner that was stopped
+// (SIGSTOP, a frozen node) may find its lock taken over when it wakes: it checks its token at
+// each heartbeat and before writing (solver/io/write_guard.hpp) and backs off.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -17,7 +20,9 @@ struct LockOwner {
   std::string host;
   long pid = 0;
   std::string started;
-  double age_seconds = 0;  // since the owner last touched the lock
+  std::string token;              // unique to one taking of the lock
+  long long process_start = -1;   // process_start_ticks(pid) on the owner's host, -1 unknown
+  double age_seconds = 0;         // since the owner last touched the lock
 };
 
 // The live owner of a member's lock, or nothing (no lock, or a stale one).
@@ -34,7 +39,10 @@ class MemberLock {
 
   bool held() const { return held_; }
   const LockOwner& owner() const { return owner_; }
-  void refresh() const;  // touches the lock (the heartbeat other hosts read)
+  // Whether the lock file still holds this taking's token (false once another run took it over).
+  bool still_held() const;
+  // The heartbeat: touches the lock while it is still ours; false (touching nothing) when not.
+  bool refresh() const;
 
  private:
   std::filesystem::path file_;

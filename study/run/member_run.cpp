@@ -17,6 +17,8 @@
 #include "build_info.hpp"
 #include "study/run/capsule_binary.hpp"
 #include "solver/run/run_member.hpp"
+#include "solver/scene/scene.hpp"
+#include "study/campaign/member_id.hpp"
 #include "study/run/member_lock.hpp"
 #include "study/state/member_state.hpp"
 #include "study/state/results_layout.hpp"
@@ -55,13 +57,43 @@ void record_slurm_task(const fs::path& member_dir, const std::string& started, d
   append_run_history(member_dir.parent_path().parent_path() / "runs.jsonl", r);
 }
 
+// Temporary files a run left behind (<file>.tmp, <file>.tmp.<pid>): under the member's lock no
+// other run writes them.
+void remove_leftover_temporaries(const fs::path& dir) {
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    const std::string n = entry.path().filename().string();
+    if (n.rfind("member.h5", 0) == 0 && n.find(".tmp") != std::string::npos && !entry.is_symlink(ec))
+      fs::remove(entry.path(), ec);
+  }
+}
+
 }  // namespace
 
+fs::path normal_member_dir(const fs::path& dir) {
+  fs::path p = fs::absolute(dir).lexically_normal();
+  while (!p.has_filename() && p.has_parent_path() && p != p.parent_path()) p = p.parent_path();  // "DIR/" is DIR
+  return p;
+}
+
+std::string member_id_from_scene(const fs::path& member_dir) {
+  const fs::path scene = member_dir / "scene.json";
+  const std::string name = member_dir.filename().string();
+  const std::string id = member_id(Scene::load(scene.string()).to_json());
+  if (name.size() <= id.size() || name.compare(name.size() - id.size() - 1, std::string::npos, "-" + id) != 0)
+    throw std::runtime_error("the member folder " + member_dir.string() + " does not end in \"-" + id +
+                             "\", the id of its scene.json: not the folder study made for that scene");
+  return id;
+}
+
 int run_one_member(const MemberRunRequest& request, std::ostream& log) {
-  const MemberPaths paths = member_paths_in(request.member_dir);
-  const std::string name = request.member_dir.filename().string();
-  const std::string id = name.substr(name.rfind('-') + 1);
-  const MemberLock lock(request.member_dir);
+  const fs::path member_dir = normal_member_dir(request.member_dir);
+  const MemberPaths paths = member_paths_in(member_dir);
+  const std::string name = member_dir.filename().string();
+  if (const std::string link = linked_member_folder(member_dir); !link.empty())
+    throw std::runtime_error("study run-member: " + link);
+  const std::string id = member_id_from_scene(member_dir);
+  const MemberLock lock(member_dir);
   if (!lock.held()) {
     log << "study run-member: " << name << " is running on " << lock.owner().host << " (pid " << lock.owner().pid
         << ", since " << lock.owner().started << "): left alone\n";
@@ -95,6 +127,7 @@ int run_one_member(const MemberRunRequest& request, std::ostream& log) {
   std::error_code ec;
   fs::remove(paths.exit_status, ec);
   fs::remove(paths.partial, ec);
+  remove_leftover_temporaries(member_dir);
 
   const std::string started = utc_now_iso8601();
   const double t0 = now_seconds();
@@ -122,6 +155,9 @@ int run_one_member(const MemberRunRequest& request, std::ostream& log) {
   }
   if (child == 0) {
     sigprocmask(SIG_SETMASK, &old_mask, nullptr);
+    // capsule checks before each write that the lock still holds this token (write_guard.hpp).
+    ::setenv("CAPSULE_MEMBER_LOCK", member_lock_file(member_dir).c_str(), 1);
+    ::setenv("CAPSULE_MEMBER_LOCK_TOKEN", lock.owner().token.c_str(), 1);
     ::dup2(log_fd, STDOUT_FILENO);
     ::dup2(log_fd, STDERR_FILENO);
     ::execv(argv[0], argv.data());
@@ -130,6 +166,7 @@ int run_one_member(const MemberRunRequest& request, std::ostream& log) {
   }
   ::close(log_fd);
   int status = 0;
+  bool lost = false;  // the lock was taken over while this run was stopped
   for (;;) {
     const timespec heartbeat{static_cast<time_t>(kLockHeartbeatSeconds), 0};
     siginfo_t info{};
@@ -139,7 +176,10 @@ int run_one_member(const MemberRunRequest& request, std::ostream& log) {
         ::waitpid(child, &status, 0);
         break;
       }
-      if (s < 0) lock.refresh();
+      if (s < 0 && !lost && !lock.refresh()) {
+        lost = true;
+        ::kill(child, SIGTERM);  // capsule finds the lock gone before its next write and ends
+      }
       const pid_t r = ::waitpid(child, &status, WNOHANG);
       if (r == child) break;
       continue;
@@ -148,8 +188,13 @@ int run_one_member(const MemberRunRequest& request, std::ostream& log) {
   }
   sigprocmask(SIG_SETMASK, &old_mask, nullptr);
   const int code = WIFEXITED(status) ? WEXITSTATUS(status) : WIFSIGNALED(status) ? 128 + WTERMSIG(status) : 1;
+  if (lost || code == kExitOwnershipLost || !lock.still_held()) {
+    log << "study run-member: " << name << ": its lock was taken over while this run was stopped (now "
+        << read_file_text(member_lock_file(member_dir)) << "); this run ended without touching the member's files\n";
+    return 0;
+  }
   if (code != kExitStoppedBySignal) write_file_atomically(paths.exit_status, std::to_string(code) + "\n");
-  record_slurm_task(request.member_dir, started, now_seconds() - t0, code);
+  record_slurm_task(member_dir, started, now_seconds() - t0, code);
   return code == 126 || code == 127 ? code : 0;
 }
 

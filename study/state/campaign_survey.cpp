@@ -3,6 +3,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "study/run/member_lock.hpp"
 #include "study/state/campaign_owner.hpp"
 #include "study/slurm/slurm_queue.hpp"
 
@@ -20,6 +21,7 @@ CampaignSurvey survey_campaign(const std::string& campaign_file, const fs::path&
   Campaign campaign = load_campaign(campaign_file);
   ResultsLayout layout(results_dir, campaign.name);
   require_same_campaign(campaign, layout);
+  require_no_linked_members_folder(layout);
   std::vector<Member> members;
   std::vector<MemberCondition> conditions;
   for_each_member(
@@ -56,6 +58,7 @@ void prepare_member_directories(const CampaignSurvey& survey) {
   for (std::size_t i = 0; i < survey.members.size(); ++i) {
     const Member& m = survey.members[i];
     const MemberPaths p = survey.layout.member(m);
+    if (!linked_member_folder(p.dir).empty()) continue;  // unreadable: nothing is written through it
     fs::create_directories(p.dir);
     // A complete member keeps the scene.json it ran with (its member file records the scene
     // too): a pass over a finished campaign changes no committed file, even where today's
@@ -68,6 +71,24 @@ void prepare_member_directories(const CampaignSurvey& survey) {
 
 void clear_for_rerun(const MemberPaths& paths) {
   for (const auto& p : {paths.h5, paths.partial, paths.exit_status}) fs::remove(p);
+}
+
+std::vector<std::size_t> clear_members_to_rerun(const CampaignSurvey& survey, const std::vector<std::size_t>& to_run,
+                                                bool rerun_unstable, bool rerun_stopped) {
+  std::vector<std::size_t> still;
+  for (std::size_t i : to_run) {
+    const MemberPaths p = survey.layout.member(survey.members[i]);
+    const MemberLock lock(p.dir);
+    if (!lock.held()) continue;  // a live run has it: its own files say how it ends
+    std::error_code ec;
+    // The states that need running without a member file stay so under the lock; one that has a
+    // member file now is judged again from it.
+    if (fs::exists(p.h5, ec) || fs::is_symlink(p.h5, ec))
+      if (!needs_run(inspect_member(p, survey.members[i].id), rerun_unstable, rerun_stopped)) continue;
+    clear_for_rerun(p);  // a stale .partial or failed attempt is rerun from scratch
+    still.push_back(i);
+  }
+  return still;
 }
 
 }  // namespace capsule::study

@@ -41,4 +41,12 @@ void prepare_member_directories(const CampaignSurvey& survey);
 // kept (the rerun appends to it) and so is member.h5.restart, from which the rerun continues.
 void clear_for_rerun(const MemberPaths& paths);
 
+// Clears, for each member of `to_run` (indices into survey.members), what a rerun replaces; each
+// under the member's lock (member_lock.hpp) and after reading its member file again, since a Slurm
+// task or another run may have finished or started it since the survey: a member whose lock
+// another live process holds, or that no longer needs running, is left as it is. Returns the
+// members still to run, in order.
+std::vector<std::size_t> clear_members_to_rerun(const CampaignSurvey& survey, const std::vector<std::size_t>& to_run,
+                                                bool rerun_unstable, bool rerun_stopped);
+
 }  // namespace capsule::study

@@ -46,11 +46,15 @@ std::optional<FinishedMember> ReusableMembers::find(const Member& m, std::ostrea
   if (it == by_id_.end()) return std::nullopt;
   for (const auto& candidate : it->second) {
     const MemberPaths p = member_paths_in(candidate.dir);
-    if (inspect_member(p, m.id).state != MemberState::complete) continue;
+    // A file marked complete that does not read whole is unreadable: named below, never copied.
+    const MemberCondition condition = inspect_member(p, m.id);
+    if (condition.state != MemberState::complete && !(condition.state == MemberState::unreadable && fs::exists(p.h5)))
+      continue;
     // The id is a 64-bit hash: the scene itself must match as well.
     const nlohmann::json scene = nlohmann::json::parse(read_file_text(p.scene), nullptr, /*allow_exceptions=*/false);
     if (scene.is_discarded() || scene != m.scene) continue;
-    if (const std::string why = reuse_refusal(p.h5); !why.empty()) {
+    if (const std::string why = condition.state == MemberState::unreadable ? condition.reason : reuse_refusal(p.h5);
+        !why.empty()) {
       if (notes) *notes << "not copied from " << candidate.campaign << "/members/" << candidate.dir.filename().string()
                         << ": " << why << "\n";
       continue;

@@ -16,6 +16,7 @@
 #include "solver/io/member_file.hpp"
 #include "study/plan/duration_text.hpp"
 #include "study/run/member_lock.hpp"
+#include "study/state/member_verification.hpp"
 #include "study/state/process_alive.hpp"
 #include "study/state/run_record.hpp"
 
@@ -40,6 +41,7 @@ std::string exit_meaning(int code) {
     case 2: return "bad scene or usage";
     case 3: return "unstable";
     case 4: return "stopped by a signal after its restart point";
+    case 5: return "interrupted by a full disk or a lack of memory";
     case 126: return "capsule binary not executable";
     case 127: return "capsule binary not found";
     default: return code > 128 ? "killed by signal " + std::to_string(code - 128) : "exit status " + std::to_string(code);
@@ -72,6 +74,9 @@ const char* state_name(MemberState state) {
 
 MemberCondition inspect_member(const MemberPaths& paths, const std::string& expected_id) {
   std::error_code ec;
+  // A member folder that is a symbolic link may lead anywhere, onto another member too: study
+  // runs, clears and deletes nothing through it (results_layout.hpp).
+  if (const std::string link = linked_member_folder(paths.dir); !link.empty()) return {MemberState::unreadable, link};
   // A folder that cannot be looked into (no permission, a file where a folder should be) is not
   // a member that never ran: say so, and never run over it.
   const fs::file_status dir = fs::status(paths.dir, ec);
@@ -91,7 +96,14 @@ MemberCondition inspect_member(const MemberPaths& paths, const std::string& expe
     }
     if (s.member_id != expected_id)
       return {MemberState::failed, "member file belongs to member \"" + s.member_id + "\", not " + expected_id};
-    if (s.status == "complete") return {MemberState::complete, ""};
+    if (s.status == "complete") {
+      // Said only of a file that reads whole: its root attributes alone can be edited or sit on a
+      // damaged dataset (verified once per version of the file, member_verification.hpp).
+      if (const std::string why = verify_member_file(paths.h5, s.content_hash); !why.empty())
+        return {MemberState::unreadable, "member file marked complete is damaged or changed, left as it is (move it "
+                                         "aside to run the member again): " + why};
+      return {MemberState::complete, ""};
+    }
     if (s.status.rfind("unstable", 0) == 0) return {MemberState::unstable, s.status};
     if (s.status.rfind("stopped", 0) == 0) return {MemberState::stopped, s.status};
     return {MemberState::failed, "member file has status \"" + s.status + "\""};
@@ -108,6 +120,15 @@ MemberCondition inspect_member(const MemberPaths& paths, const std::string& expe
       return {MemberState::failed, "its exit_status file is empty or damaged (a full or read-only disk?); " +
                                        (last_line(paths.log).empty() ? std::string("capsule.log is empty")
                                                                      : "capsule.log ends: " + last_line(paths.log))};
+    if (code == 5) {  // capsule's kExitResourcesExhausted: resumable, not an end
+      const std::string tail = last_line(paths.log);
+      return {MemberState::interrupted,
+              exit_meaning(code) + (tail.empty() ? std::string() : ": " + tail) + "; `study run` continues it " +
+                  (fs::exists(paths.restart, ec) ? "from its restart point" : "(no restart point yet: from the start)") +
+                  " once there is room"};
+    }
+    if (code > 128 && fs::exists(paths.restart, ec))  // killed (SIGKILL, the OOM killer): resumable
+      return {MemberState::interrupted, exit_meaning(code) + "; `study run` continues it from its restart point"};
     if (code != 0) {
       std::string reason = exit_meaning(code);
       const std::string tail = last_line(paths.log);
@@ -124,7 +145,9 @@ MemberCondition inspect_member(const MemberPaths& paths, const std::string& expe
     // first progress line) files written within kStaleSeconds.
     bool live = owner.has_value();
     if (!live && c.progress.present && c.progress.host == host_name()) {
-      live = process_alive(c.progress.pid);
+      // The writer started before it last wrote the file: a younger process has reused its pid.
+      const double process_age = process_age_seconds(c.progress.pid);
+      live = process_alive(c.progress.pid) && (process_age < 0 || process_age + 2 >= c.progress.age_seconds);
     } else if (!live) {
       double age = c.progress.present ? c.progress.age_seconds : 1e300;
       if (fs::exists(paths.partial, ec)) age = std::min(age, age_seconds(paths.partial));

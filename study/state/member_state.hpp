@@ -11,7 +11,7 @@ namespace capsule::study {
 
 enum class MemberState {
   fresh,        // nothing run yet
-  interrupted,  // only member.h5.partial: killed while running
+  interrupted,  // a .partial or restart point and no live owner (killed), or capsule's exit 5 (disk full, no memory)
   running,      // member.h5.partial of a live capsule (its progress file names a live pid, or is fresh)
   complete,     // member.h5 with status "complete" and this member's id
   unstable,     // member.h5 with status "unstable at kt = X: reason"

@@ -48,6 +48,15 @@ struct ResultsLayout {
 // The files of the member folder dir (any campaign's).
 MemberPaths member_paths_in(const std::filesystem::path& dir);
 
+// Symbolic links inside a campaign's folder are refused: a link at members/ sends the wrapper
+// (<member>/../../run_member.sh) and every scene.json elsewhere, and a member folder linked to
+// another member would have that member's files cleared. The results folder itself (and the
+// campaign's folder) may be links: paths below them are resolved from there.
+// "" when neither the member folder nor its members/ folder is a symbolic link; else why.
+std::string linked_member_folder(const std::filesystem::path& member_dir);
+// Throws std::runtime_error naming the link when <root>/members is a symbolic link.
+void require_no_linked_members_folder(const ResultsLayout& layout);
+
 // Writes text to path atomically (temporary file in the same folder, then rename).
 void write_file_atomically(const std::filesystem::path& path, const std::string& text);
 // The whole file as text; "" when it does not exist or cannot be read.

@@ -100,7 +100,8 @@ TEST_CASE("one flipped bit in a member file's series, shapes or markers is refus
   fs::remove_all(dir);
 }
 
-TEST_CASE("a member file from before the content hash reads as it did; a missing series is named", "[io][checksum]") {
+TEST_CASE("a member file without a content hash is refused unless legacy files are asked for; a missing series is named",
+          "[io][checksum]") {
   const auto dir = fresh_dir("old");
   const std::string path = write_member(dir);
   {  // An older writer: no content hash. Then a stray edit removes D_xy, unnoticed by the file.
@@ -109,7 +110,13 @@ TEST_CASE("a member file from before the content hash reads as it did; a missing
     H5Ldelete(f, "series/D_xy", H5P_DEFAULT);
     H5Fclose(f);
   }
+  // A deleted hash reads like an old file: its content cannot be checked, so it is refused...
+  CHECK_THROWS_WITH(read_member(path), Catch::Contains(path) && Catch::Contains("no content hash") &&
+                                           Catch::Contains("--legacy-member-files"));
+  // ...unless legacy files are asked for explicitly.
+  capsule::io::accept_files_without_content_hash(true);
   const auto m = read_member(path);
+  capsule::io::accept_files_without_content_hash(false);
   CHECK(m.series.count("D_xy") == 0);
   CHECK(m.series.at("theta").size() == 200);
   CHECK(capsule::io::missing_series(m) == path + ": no series D_xy");
