@@ -37,7 +37,7 @@ std::string progress_line(const std::string& campaign, const ProgressCounts& c, 
   }
   line << percent << "% | " << c.done << " done, " << c.running << " running, " << c.left << " left | "
        << format_duration(elapsed_seconds) << " elapsed, ETA "
-       << (c.running + c.left == 0 ? "0s" : format_duration(eta_seconds));
+       << (c.running + c.left == 0 ? "0s" : eta_seconds < 0.5 ? "<1s" : format_duration(eta_seconds));
   return line.str();
 }
 

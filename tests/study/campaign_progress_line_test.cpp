@@ -82,6 +82,7 @@ TEST_CASE("the progress line names the share done, the elapsed time and the ETA"
         "campaign demo 31% | 1 done, 2 running, 1 left | 1m05s elapsed, ETA 2m20s");
   c.fraction_done = 0.999;  // not 100 % while members run
   CHECK(progress_line("demo", c, 65, 1, false).find(" 99% |") != std::string::npos);
+  CHECK(progress_line("demo", c, 65, 0.2, false).find("ETA <1s") != std::string::npos);  // not "0s" while members run
   ProgressCounts all;
   all.done = 4;
   all.fraction_done = 1.0;
