@@ -14,8 +14,8 @@ namespace capsule {
 // Empty when the file opens.
 std::string unreadable_file_reason(const std::string& path);
 
-// The known key closest to `key` (case and '_' ignored first, then at most two edits, at most
-// a third of the key's length); empty when none is close.
+// The known key closest to `key`: one equal to it with case, '_' and '-' ignored, else the
+// nearest within two edits (one for a key shorter than six characters); empty when none is.
 std::string nearest_key(const std::string& key, const std::vector<std::string>& known);
 
 // "unknown key", with ", did you mean X?" when a known key is near.
