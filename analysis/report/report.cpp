@@ -90,6 +90,9 @@ ReportSummary write_report(const ReportRequest& request) {
   if (!block.figures) {
     summary.figures_skipped = true;
     summary.figures_note = "figures off in the analysis block";
+  } else if (!request.no_figures.empty()) {
+    summary.figures_skipped = true;
+    summary.figures_note = request.no_figures;
   } else {
     draw_figures(out, outputs.figure_data, outputs, summary);
   }

@@ -21,6 +21,7 @@ struct ReportRequest {
   std::string campaign_name, campaign_file, out_dir;
   nlohmann::json analysis;     // the campaign's "analysis" block (null: defaults)
   std::vector<MemberRef> members;
+  std::string no_figures;      // non-empty: draw no figures, and this says why
 };
 
 struct ReportSummary {

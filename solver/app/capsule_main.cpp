@@ -1,7 +1,9 @@
-// capsule: runs one scene (one member of a study) and writes one member file.
+// capsule: runs one scene (one member of a study) and writes one member file; beside it the
+// subcommands check, version, bench, reference-bim, rigid-sphere and rigid-circle (CLI11).
 // Thin command line over the solver library; all physics lives in solver/.
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <memory>
 #include <nlohmann/json.hpp>
 
 #include "solver/app/cli_support.hpp"
@@ -16,6 +18,9 @@
 #include "build_info.hpp"
 
 namespace {
+
+using capsule::cli::Command;
+
 // docs/guide/scenes.md "Exit status"; run_member() and `check` return these.
 const char* const exit_codes =
     "Exit status: 0 complete (check: the scene is valid), 1 the solver failed or a file could not be\n"
@@ -23,82 +28,100 @@ const char* const exit_codes =
     "4 stopped by SIGTERM, SIGINT or SIGUSR1 after writing a restart point (the same command continues),\n"
     "5 interrupted by a full disk or a lack of memory (the same command continues once there is room),\n"
     "6 the member's lock was taken over by another run: nothing of the member was touched.";
+
+Command add_check_command(CLI::App& capsule) {
+  auto scene = std::make_shared<std::string>();
+  CLI::App& app = *capsule.add_subcommand("check", "validate a scene and print it with every default filled in");
+  app.footer(std::string("Example: capsule check tests/data/scenes/circle_quick_2d.json\n") + exit_codes);
+  app.add_option("scene", *scene, "scene JSON file")->required();
+  return {&app, [scene] {
+            try {
+              auto s = capsule::Scene::load(*scene);
+              // The canonical scene on stdout (study hashes it); the memory it needs on stderr.
+              if (const std::string refusal = capsule::memory_refusal(s); !refusal.empty()) {
+                std::cerr << "capsule: " << *scene << ": " << refusal << "\n";
+                return 2;
+              }
+              std::cout << s.to_json().dump(2) << "\n";
+              std::cerr << "capsule: " << capsule::describe_memory(capsule::estimate_memory(s)) << "; this machine has "
+                        << capsule::format_bytes(capsule::physical_memory_bytes()) << "\n";
+              return 0;
+            } catch (const std::exception& e) {
+              std::cerr << "capsule: " << e.what() << "\n";
+              return 2;
+            }
+          }};
+}
+
+// What a member file of this binary records (study run checks it before each member).
+Command add_version_command(CLI::App& capsule) {
+  CLI::App& app = *capsule.add_subcommand(
+      "version", "the code version and physics version this binary records in a member file, as JSON");
+  app.footer("Exit status: 0 printed, 2 bad command line.");
+  return {&app, [] {
+            std::cout << nlohmann::json{{"code_version", capsule::build::code_version},
+                                        {"physics_version", capsule::physics_version}}.dump()
+                      << "\n";
+            return 0;
+          }};
+}
+
+Command add_bench_command(CLI::App& capsule) {
+  struct Settings {
+    std::string what;
+    bool quick = false;
+    int threads = 0, a = 10, mesh_level = 4;
+  };
+  auto s = std::make_shared<Settings>();
+  CLI::App& app = *capsule.add_subcommand("bench", "performance benchmarks: lbm (the fluid), member3d (a 3D step, by part)");
+  app.footer("Example: capsule bench member3d --quick --a 7 --mesh-level 3\n"
+             "Exit status: 0 done, 1 failure, 2 bad command line.");
+  app.add_option("what", s->what, "what to benchmark: lbm (the fluid kernels), member3d (a step of the default 3D member, by part)")
+      ->required()
+      ->check(CLI::IsMember({"lbm", "member3d"}));
+  app.add_flag("--quick", s->quick, "fewer steps per measurement");
+  app.add_option("--threads", s->threads, "largest thread count to try (0 = all cores)")
+      ->check(capsule::cli::whole_number_at_least(0));
+  app.add_option("--a", s->a, "member3d: capsule radius in lattice nodes")->capture_default_str()->check(CLI::Range(3, 40));
+  app.add_option("--mesh-level", s->mesh_level, "member3d: icosphere level of the membrane")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 6));
+  return {&app, [s, &app] {
+            if (s->what != "member3d" && (app.count("--a") > 0 || app.count("--mesh-level") > 0)) {
+              std::cerr << "capsule bench: --a and --mesh-level apply to member3d only\n";
+              return 2;
+            }
+            return s->what == "member3d" ? capsule::bench_member3d(s->quick, s->threads, s->a, s->mesh_level)
+                                         : capsule::lbm::bench_lbm(s->quick, s->threads);
+          }};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  // `capsule SCENE -o OUT` is the common form; subcommands `check`, `bench` and
-  // `reference-bim`, `rigid-sphere` and `rigid-circle` sit beside it.
-  if (argc >= 2 && std::string(argv[1]) == "check") {
-    CLI::App app{"capsule check: validate a scene and print it with every default filled in"};
-    app.footer(exit_codes);
-    std::string scene;
-    app.add_option("scene", scene, "scene JSON file")->required();
-    if (const int code = capsule::cli::parse_or_exit_code(app, argc - 1, argv + 1); code >= 0) return code;
-    try {
-      auto s = capsule::Scene::load(scene);
-      // The canonical scene on stdout (study hashes it); the memory it needs on stderr.
-      if (const std::string refusal = capsule::memory_refusal(s); !refusal.empty()) {
-        std::cerr << "capsule: " << scene << ": " << refusal << "\n";
-        return 2;
-      }
-      std::cout << s.to_json().dump(2) << "\n";
-      std::cerr << "capsule: " << capsule::describe_memory(capsule::estimate_memory(s)) << "; this machine has "
-                << capsule::format_bytes(capsule::physical_memory_bytes()) << "\n";
-      return 0;
-    } catch (const std::exception& e) {
-      std::cerr << "capsule: " << e.what() << "\n";
-      return 2;
-    }
-  }
-  if (argc >= 2 && std::string(argv[1]) == "version") {
-    // What a member file of this binary records (study run checks it before each member).
-    CLI::App app{"capsule version: the code version and physics version this binary records in a member file, as JSON"};
-    app.footer("Exit status: 0 printed, 2 bad command line.");
-    if (const int code = capsule::cli::parse_or_exit_code(app, argc - 1, argv + 1); code >= 0) return code;
-    std::cout << nlohmann::json{{"code_version", capsule::build::code_version},
-                                {"physics_version", capsule::physics_version}}.dump() << "\n";
-    return 0;
-  }
-  if (argc >= 2 && std::string(argv[1]) == "reference-bim") return capsule::cli::reference_bim_command(argc - 1, argv + 1);
-  if (argc >= 2 && std::string(argv[1]) == "rigid-sphere") return capsule::cli::rigid_sphere_command(argc - 1, argv + 1);
-  if (argc >= 2 && std::string(argv[1]) == "rigid-circle") return capsule::cli::rigid_circle_command(argc - 1, argv + 1);
-  if (argc >= 2 && std::string(argv[1]) == "bench") {
-    CLI::App app{"capsule bench: performance benchmarks"};
-    app.footer("Exit status: 0 done, 1 failure, 2 bad command line.");
-    std::string what;
-    bool quick = false;
-    int threads = 0;
-    app.add_option("what", what, "what to benchmark: lbm (the fluid kernels), member3d (a step of the default 3D member, by part)")
-        ->required()
-        ->check(CLI::IsMember({"lbm", "member3d"}));
-    app.add_flag("--quick", quick, "fewer steps per measurement");
-    app.add_option("--threads", threads, "largest thread count to try (0 = all cores)")
-        ->check(capsule::cli::whole_number_at_least(0));
-    int a = 10, mesh_level = 4;
-    app.add_option("--a", a, "member3d: capsule radius in lattice nodes")->capture_default_str()->check(CLI::Range(3, 40));
-    app.add_option("--mesh-level", mesh_level, "member3d: icosphere level of the membrane")
-        ->capture_default_str()
-        ->check(CLI::Range(0, 6));
-    if (const int code = capsule::cli::parse_or_exit_code(app, argc - 1, argv + 1); code >= 0) return code;
-    if (what != "member3d" && (app.count("--a") > 0 || app.count("--mesh-level") > 0)) {
-      std::cerr << "capsule bench: --a and --mesh-level apply to member3d only\n";
-      return 2;
-    }
-    return what == "member3d" ? capsule::bench_member3d(quick, threads, a, mesh_level) : capsule::lbm::bench_lbm(quick, threads);
-  }
   CLI::App app{"capsule: one capsule in shear flow (IB + MRT lattice Boltzmann + membrane FEM)\n"
-               "  capsule SCENE.json -o MEMBER.h5   run one scene\n"
-               "  capsule check SCENE.json          validate a scene\n"
-               "  capsule version                   the code and physics version a member file records\n"
-               "  capsule bench lbm                 fluid benchmark\n"
-               "  capsule bench member3d            3D step benchmark, by part\n"
-               "  capsule reference-bim --ca CA     boundary-integral reference capsule\n"
-               "  capsule rigid-sphere --a A        rigid IB shell: torque and stresslet against Stokes\n"
-               "  capsule rigid-circle --a A        rigid IB circle (2D): torque and stresslet against Stokes"};
-  app.footer(exit_codes);
+               "  capsule SCENE.json -o MEMBER.h5   run one scene (docs/guide/scenes.md)\n"
+               "  capsule COMMAND --help            a command's options"};
+  app.footer(std::string("Examples:\n"
+                         "  capsule check tests/data/scenes/circle_quick_2d.json\n"
+                         "  capsule tests/data/scenes/circle_quick_2d.json -o quick.h5\n"
+                         "  capsule results/demo/members/<member>/scene.json -o m.h5 --checkpoint-seconds 600\n") +
+             exit_codes);
+  app.set_version_flag("--version", std::string("capsule ") + capsule::build::code_version + " (physics version " +
+                                        capsule::physics_version + ")",
+                       "print the code version and physics version, then exit");
+  app.require_subcommand(0, 1);
+  std::vector<Command> commands;
+  commands.push_back(add_check_command(app));
+  commands.push_back(add_version_command(app));
+  commands.push_back(add_bench_command(app));
+  commands.push_back(capsule::cli::add_reference_bim_command(app));
+  commands.push_back(capsule::cli::add_rigid_sphere_command(app));
+  commands.push_back(capsule::cli::add_rigid_circle_command(app));
+
   capsule::RunOptions opt;
-  app.add_option("scene", opt.scene_path, "scene JSON file")->required()->check(CLI::ExistingFile);
-  app.add_option("-o,--output", opt.output_path, "member file to write (HDF5)")->required();
+  app.add_option("scene", opt.scene_path, "scene JSON file (to run one scene)");
+  app.add_option("-o,--output", opt.output_path, "member file to write (HDF5)");
   app.add_option("--threads", opt.threads, "OpenMP threads inside this member (0 = OMP default)")
       ->check(capsule::cli::whole_number_at_least(0));
   app.add_option("--id", opt.member_id, "member id to record (set by study)");
@@ -112,5 +135,13 @@ int main(int argc, char** argv) {
   app.add_option("--checkpoint-at-step", opt.checkpoint.at_step)->group("")->check(CLI::NonNegativeNumber);
   app.add_option("--stop-after-step", opt.checkpoint.stop_after_step)->group("")->check(CLI::NonNegativeNumber);
   if (const int code = capsule::cli::parse_or_exit_code(app, argc, argv); code >= 0) return code;
+  for (const Command& c : commands)
+    if (c.app->parsed()) return c.run();
+  if (opt.scene_path.empty() || opt.output_path.empty()) {
+    std::cerr << "capsule: " << (opt.scene_path.empty() ? "a scene file" : "-o MEMBER.h5")
+              << " is required to run a scene (or a command: check, version, bench, reference-bim, rigid-sphere, "
+                 "rigid-circle); see capsule --help\n";
+    return 2;
+  }
   return capsule::run_member(opt);
 }

@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <climits>
 #include <cstdlib>
+#include <functional>
 #include <string>
 
 namespace capsule::cli {
@@ -48,6 +49,13 @@ inline CLI::Validator finite_number_in(double low, double high, bool low_include
       },
       "NUMBER in " + range);
 }
+
+// A subcommand of `capsule`: added to the app by its add_*_command(), run after parsing when
+// the command line named it; run() returns the exit status.
+struct Command {
+  CLI::App* app = nullptr;
+  std::function<int()> run;
+};
 
 // Parses argv; on a command-line error prints CLI11's message and returns 2 (0 for --help
 // and --version). Returns -1 when parsing succeeded and the program should go on.

@@ -3,17 +3,21 @@
 
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <memory>
 
 #include "solver/app/cli_support.hpp"
 #include "solver/boundary_integral/reference_run.hpp"
 
 namespace capsule::cli {
 
-int reference_bim_command(int argc, const char* const* argv) {
-  CLI::App app{"capsule reference-bim: a capsule in unbounded simple shear by the boundary-integral method\n"
-               "(V = 1, Stokes flow, no walls; units a = k = mu = 1). Prints a summary row (CSV with header)."};
-  app.footer("Exit status: 0 done, 1 the run failed (unstable or a file could not be written), 2 bad command line.");
-  boundary_integral::ReferenceRunOptions o;
+Command add_reference_bim_command(CLI::App& capsule) {
+  auto options = std::make_shared<boundary_integral::ReferenceRunOptions>();
+  boundary_integral::ReferenceRunOptions& o = *options;
+  CLI::App& app = *capsule.add_subcommand("reference-bim", "boundary-integral reference capsule");
+  app.footer("A capsule in unbounded simple shear by the boundary-integral method (V = 1, Stokes flow, no walls;\n"
+             "units a = k = mu = 1). Prints a summary row (CSV with header).\n"
+             "Example: capsule reference-bim --ca 0.1 --level 3 --steady 1e-4\n"
+             "Exit status: 0 done, 1 the run failed (unstable or a file could not be written), 2 bad command line.");
   auto& c = o.capsule;
   app.add_option("--ca", c.Ca, "capillary number mu k a / E_s (34)")->required()->check(CLI::Range(1e-5, 10.0));
   app.add_option("--law", c.law, "membrane law")->capture_default_str()->check(CLI::IsMember({"neo-hookean", "skalak"}));
@@ -38,14 +42,15 @@ int reference_bim_command(int argc, const char* const* argv) {
   app.add_option("--near-radius", c.quadrature.near_radius, "near zone, in units of a (the larger of the two applies)")
       ->capture_default_str()->check(CLI::Range(0.0, 4.0));
   app.add_option("-o,--series", o.series_path, "CSV file for the shape series (kt, D, theta, ...)");
-  if (const int code = parse_or_exit_code(app, argc, argv); code >= 0) return code;
-  try {
-    boundary_integral::run_reference(o, std::cout);
-    return 0;
-  } catch (const std::exception& e) {
-    std::cerr << "capsule reference-bim: " << e.what() << "\n";
-    return 1;
-  }
+  return {&app, [options] {
+    try {
+      boundary_integral::run_reference(*options, std::cout);
+      return 0;
+    } catch (const std::exception& e) {
+      std::cerr << "capsule reference-bim: " << e.what() << "\n";
+      return 1;
+    }
+  }};
 }
 
 }  // namespace capsule::cli

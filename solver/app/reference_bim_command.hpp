@@ -1,5 +1,9 @@
 #pragma once
+#include <CLI/CLI.hpp>
+
+#include "solver/app/cli_support.hpp"
+
 namespace capsule::cli {
-// `capsule reference-bim ...` (argv[0] is the word reference-bim); returns the exit status.
-int reference_bim_command(int argc, const char* const* argv);
+// `capsule reference-bim ...`: adds the subcommand; its run() returns the exit status.
+Command add_reference_bim_command(CLI::App& capsule);
 }  // namespace capsule::cli

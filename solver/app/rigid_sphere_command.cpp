@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 #include "solver/app/cli_support.hpp"
@@ -46,14 +47,20 @@ void write_result(const rigid_sphere::RigidShellResult& r, const std::string& se
 
 }  // namespace
 
-int rigid_sphere_command(int argc, const char* const* argv) {
-  CLI::App app{"capsule rigid-sphere: a rigid spherical shell of IB markers in the capsule's shear box (no membrane\n"
-               "mechanics). Prints one CSV row: the torque and stresslet at the end against the unbounded Stokes values\n"
-               "(4 pi mu a^3 k (1 + 2 spin), (10/3) pi mu a^3 k), their change over the last kt, and the leakage."};
-  app.footer("Exit status: 0 done, 1 the run failed (blow-up, or a file could not be written), 2 bad command line.");
-  rigid_sphere::RigidShellOptions o;
-  std::string series;
-  std::vector<double> domain;
+Command add_rigid_sphere_command(CLI::App& capsule) {
+  struct Settings {
+    rigid_sphere::RigidShellOptions o;
+    std::string series;
+    std::vector<double> domain;
+  };
+  auto settings = std::make_shared<Settings>();
+  auto& [o, series, domain] = *settings;
+  CLI::App& app = *capsule.add_subcommand("rigid-sphere", "rigid IB shell: torque and stresslet against Stokes");
+  app.footer("A rigid spherical shell of IB markers in the capsule's shear box (no membrane mechanics). Prints one CSV\n"
+             "row: the torque and stresslet at the end against the unbounded Stokes values (4 pi mu a^3 k (1 + 2 spin),\n"
+             "(10/3) pi mu a^3 k), their change over the last kt, and the leakage.\n"
+             "Example: capsule rigid-sphere --a 7 --level 3 -o series.csv\n"
+             "Exit status: 0 done, 1 the run failed (blow-up, or a file could not be written), 2 bad command line.");
   app.add_option("--a", o.a, "sphere radius in lattice nodes")->capture_default_str()->check(CLI::Range(2.0, 64.0));
   app.add_option("--marker-radius", o.marker_radius, "radius of the markers (default: a)")->check(CLI::Range(1.0, 96.0));
   app.add_option("--level", o.level, "icosphere level (3: 642, 4: 2562 markers)")->capture_default_str()->check(CLI::Range(1, 6));
@@ -71,36 +78,44 @@ int rigid_sphere_command(int argc, const char* const* argv) {
   app.add_option("--precision", o.precision, "fluid populations")->capture_default_str()->check(CLI::IsMember({"single", "double"}));
   app.add_option("--every", o.every, "series interval in kt")->capture_default_str()->check(CLI::Range(1e-3, 100.0));
   app.add_option("-o,--series", series, "CSV file for the series (kt, torque, stresslet, leakage, lag)");
-  if (const int code = parse_or_exit_code(app, argc, argv); code >= 0) return code;
-  if (!domain.empty()) o.domain = {domain[0], domain[1], domain[2]};
-  try {
-    rigid_sphere::validate(o);
-  } catch (const std::exception& e) {
-    std::cerr << "capsule rigid-sphere: " << e.what() << "\n";
-    return 2;
-  }
-  try {
-    const auto r = rigid_sphere::run_rigid_shell(o);
-    std::ostringstream values;
-    values.precision(7);
-    values << o.a << "," << (o.marker_radius > 0 ? o.marker_radius : o.a) << "," << o.level << "," << r.grid[0] << ","
-           << r.grid[1] << "," << r.grid[2] << "," << o.spin << "," << o.kernel << "," << o.precision;
-    write_result(r, series, "a,marker_radius,level,nx,ny,nz,spin,kernel,precision", values.str());
-    return 0;
-  } catch (const std::exception& e) {
-    std::cerr << "capsule rigid-sphere: " << e.what() << "\n";
-    return 1;
-  }
+  return {&app, [settings] {
+    auto& [o, series, domain] = *settings;
+    if (!domain.empty()) o.domain = {domain[0], domain[1], domain[2]};
+    try {
+      rigid_sphere::validate(o);
+    } catch (const std::exception& e) {
+      std::cerr << "capsule rigid-sphere: " << e.what() << "\n";
+      return 2;
+    }
+    try {
+      const auto r = rigid_sphere::run_rigid_shell(o);
+      std::ostringstream values;
+      values.precision(7);
+      values << o.a << "," << (o.marker_radius > 0 ? o.marker_radius : o.a) << "," << o.level << "," << r.grid[0] << ","
+             << r.grid[1] << "," << r.grid[2] << "," << o.spin << "," << o.kernel << "," << o.precision;
+      write_result(r, series, "a,marker_radius,level,nx,ny,nz,spin,kernel,precision", values.str());
+      return 0;
+    } catch (const std::exception& e) {
+      std::cerr << "capsule rigid-sphere: " << e.what() << "\n";
+      return 1;
+    }
+  }};
 }
 
-int rigid_circle_command(int argc, const char* const* argv) {
-  CLI::App app{"capsule rigid-circle: a rigid circle of IB markers in the 2D capsule's shear channel (no membrane\n"
-               "mechanics). Prints one CSV row: the torque and stresslet per unit length at the end against the unbounded\n"
-               "Stokes values (2 pi mu a^2 k (1 + 2 spin), 2 pi mu a^2 k), their change over the last kt, and the leakage."};
-  app.footer("Exit status: 0 done, 1 the run failed (blow-up, or a file could not be written), 2 bad command line.");
-  rigid_sphere::RigidCircleOptions o;
-  std::string series;
-  std::vector<double> domain;
+Command add_rigid_circle_command(CLI::App& capsule) {
+  struct Settings {
+    rigid_sphere::RigidCircleOptions o;
+    std::string series;
+    std::vector<double> domain;
+  };
+  auto settings = std::make_shared<Settings>();
+  auto& [o, series, domain] = *settings;
+  CLI::App& app = *capsule.add_subcommand("rigid-circle", "rigid IB circle (2D): torque and stresslet against Stokes");
+  app.footer("A rigid circle of IB markers in the 2D capsule's shear channel (no membrane mechanics). Prints one CSV\n"
+             "row: the torque and stresslet per unit length at the end against the unbounded Stokes values\n"
+             "(2 pi mu a^2 k (1 + 2 spin), 2 pi mu a^2 k), their change over the last kt, and the leakage.\n"
+             "Example: capsule rigid-circle --a 10 --kt 5\n"
+             "Exit status: 0 done, 1 the run failed (blow-up, or a file could not be written), 2 bad command line.");
   app.add_option("--a", o.a, "circle radius in lattice nodes")->capture_default_str()->check(CLI::Range(2.0, 200.0));
   app.add_option("--marker-radius", o.marker_radius, "radius of the markers (default: a)")->check(CLI::Range(1.0, 300.0));
   app.add_option("--segments", o.segments, "markers on the circle (the 2D capsule's default 140)")->capture_default_str()
@@ -119,26 +134,28 @@ int rigid_circle_command(int argc, const char* const* argv) {
   app.add_option("--precision", o.precision, "fluid populations")->capture_default_str()->check(CLI::IsMember({"single", "double"}));
   app.add_option("--every", o.every, "series interval in kt")->capture_default_str()->check(CLI::Range(1e-3, 100.0));
   app.add_option("-o,--series", series, "CSV file for the series (kt, torque, stresslet, leakage, lag)");
-  if (const int code = parse_or_exit_code(app, argc, argv); code >= 0) return code;
-  if (!domain.empty()) o.domain[0] = domain[0], o.domain[1] = domain[1];
-  try {
-    rigid_sphere::validate(o);
-  } catch (const std::exception& e) {
-    std::cerr << "capsule rigid-circle: " << e.what() << "\n";
-    return 2;
-  }
-  try {
-    const auto r = rigid_sphere::run_rigid_circle(o);
-    std::ostringstream values;
-    values.precision(7);
-    values << o.a << "," << (o.marker_radius > 0 ? o.marker_radius : o.a) << "," << o.segments << "," << r.grid[0] << ","
-           << r.grid[1] << "," << o.spin << "," << o.kernel << "," << o.precision;
-    write_result(r, series, "a,marker_radius,segments,nx,ny,spin,kernel,precision", values.str());
-    return 0;
-  } catch (const std::exception& e) {
-    std::cerr << "capsule rigid-circle: " << e.what() << "\n";
-    return 1;
-  }
+  return {&app, [settings] {
+    auto& [o, series, domain] = *settings;
+    if (!domain.empty()) o.domain[0] = domain[0], o.domain[1] = domain[1];
+    try {
+      rigid_sphere::validate(o);
+    } catch (const std::exception& e) {
+      std::cerr << "capsule rigid-circle: " << e.what() << "\n";
+      return 2;
+    }
+    try {
+      const auto r = rigid_sphere::run_rigid_circle(o);
+      std::ostringstream values;
+      values.precision(7);
+      values << o.a << "," << (o.marker_radius > 0 ? o.marker_radius : o.a) << "," << o.segments << "," << r.grid[0] << ","
+             << r.grid[1] << "," << o.spin << "," << o.kernel << "," << o.precision;
+      write_result(r, series, "a,marker_radius,segments,nx,ny,spin,kernel,precision", values.str());
+      return 0;
+    } catch (const std::exception& e) {
+      std::cerr << "capsule rigid-circle: " << e.what() << "\n";
+      return 1;
+    }
+  }};
 }
 
 }  // namespace capsule::cli

@@ -1,7 +1,11 @@
 #pragma once
+#include <CLI/CLI.hpp>
+
+#include "solver/app/cli_support.hpp"
+
 namespace capsule::cli {
-// `capsule rigid-sphere ...` (argv[0] is the word rigid-sphere); returns the exit status.
-int rigid_sphere_command(int argc, const char* const* argv);
+// `capsule rigid-sphere ...`: adds the subcommand; its run() returns the exit status.
+Command add_rigid_sphere_command(CLI::App& capsule);
 // `capsule rigid-circle ...`: the 2D twin.
-int rigid_circle_command(int argc, const char* const* argv);
+Command add_rigid_circle_command(CLI::App& capsule);
 }  // namespace capsule::cli

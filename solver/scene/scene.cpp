@@ -1,5 +1,6 @@
 #include "solver/scene/scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +11,7 @@
 
 #include "solver/ib/hydrodynamic_radius.hpp"
 #include "solver/scene/json_text.hpp"
+#include "solver/scene/user_hints.hpp"
 
 namespace capsule {
 namespace {
@@ -22,12 +24,16 @@ std::string fmt(double v) {
   return s.str();
 }
 
-// Reads one JSON object, remembering which keys were used so the rest can be refused.
+// Reads one JSON object, remembering which keys were used so the rest can be refused. A key
+// the object does not know is refused first, before any missing or bad value (a misspelt
+// "Eb" is named as such, with the key it is near, not reported as a missing "E_b").
 class ObjectReader {
  public:
-  ObjectReader(const json& j, std::string source, std::string path)
-      : j_(j), source_(std::move(source)), path_(std::move(path)) {
+  ObjectReader(const json& j, std::string source, std::string path, std::vector<std::string> known)
+      : j_(j), source_(std::move(source)), path_(std::move(path)), known_(std::move(known)) {
     if (!j_.is_object()) fail("", "expected a JSON object", "an object {...}");
+    for (auto it = j_.begin(); it != j_.end(); ++it)
+      if (std::find(known_.begin(), known_.end(), it.key()) == known_.end()) refuse_key(it.key());
   }
 
   [[noreturn]] void fail(const std::string& key, const std::string& problem,
@@ -119,24 +125,30 @@ class ObjectReader {
   const std::string& source() const { return source_; }
 
   // Refuses any key not read: a misspelt key must never be silently ignored.
-  void refuse_unknown(const std::vector<std::string>& known) const {
-    for (auto it = j_.begin(); it != j_.end(); ++it) {
-      if (!used_.count(it.key())) {
-        std::string list;
-        for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-        fail(it.key(), "unknown key", list);
-      }
-    }
+  void refuse_unknown() const {
+    for (auto it = j_.begin(); it != j_.end(); ++it)
+      if (!used_.count(it.key())) refuse_key(it.key());
   }
 
  private:
+  [[noreturn]] void refuse_key(const std::string& key) const {
+    std::string list;
+    for (const auto& k : known_) list += (list.empty() ? "" : ", ") + k;
+    fail(key, unknown_key_problem(key, known_), list);
+  }
+
   const json& j_;
   std::string source_, path_;
+  std::vector<std::string> known_;
   std::set<std::string> used_;
 };
 
 PhaseSpec read_phase(const json& j, const std::string& source, const std::string& path, bool shear) {
-  ObjectReader r(j, source, path);
+  ObjectReader r(j, source, path,
+                 shear ? std::vector<std::string>{"until", "kt", "value", "after_kt", "tolerance", "window_kt", "max_kt",
+                                                  "oscillatory_period_kt"}
+                       : std::vector<std::string>{"until", "kt", "value", "tolerance", "window_kt", "window_fraction",
+                                                  "max_kt"});
   PhaseSpec p;
   p.until = shear ? r.choice("until", std::nullopt, {"time", "steady", "theta", "beta"})
                   : r.choice("until", std::nullopt, {"time", "settled"});
@@ -160,13 +172,13 @@ PhaseSpec read_phase(const json& j, const std::string& source, const std::string
            "[0, max_kt)");
   if (shear) {
     p.oscillatory_period_kt = r.number("oscillatory_period_kt", 0.0, 0.0, 1e4);
-    r.refuse_unknown({"until", "kt", "value", "after_kt", "tolerance", "window_kt", "max_kt", "oscillatory_period_kt"});
+    r.refuse_unknown();
   } else {
     // A turning point of a slow recovery (a tank-treading biconcave capsule's D_xy falls for
     // ~15 kt, then rises for ~75 kt, Fig. 30) is stationary over any fixed short window; a
     // window that grows with the time since the stop is not fooled by it.
     p.window_fraction = p.until == "settled" ? r.number("window_fraction", 0.5, 0.0, 1.0) : r.number("window_fraction", 0.0, 0.0, 0.0);
-    r.refuse_unknown({"until", "kt", "value", "tolerance", "window_kt", "window_fraction", "max_kt"});
+    r.refuse_unknown();
   }
   return p;
 }
@@ -195,7 +207,9 @@ void ignore_other_dimension(Scene& s) {
 }  // namespace
 
 Scene Scene::from_json(const json& j, const std::string& source) {
-  ObjectReader r(j, source, "");
+  ObjectReader r(j, source, "",
+                 {"dim", "physics_version", "shape", "law", "C", "Re", "Ca", "E_b", "V", "eta", "G", "c0",
+                  "reference_case", "volume_penalty", "power_law", "conventions", "resolution", "protocol", "output"});
   Scene s;
   s.dim = r.integer("dim", 0, 2, 3);
   if (!r.has("dim")) r.fail("dim", "missing required key", "2 | 3");
@@ -239,7 +253,7 @@ Scene Scene::from_json(const json& j, const std::string& source) {
 
   {
     json pl = r.object("power_law", false);
-    ObjectReader p(pl, source, r.child_path("power_law"));
+    ObjectReader p(pl, source, r.child_path("power_law"), {"K", "n", "model"});
     s.power_law_K = p.number("K", 0.0, 0.0, 1e3);
     s.power_law_n = p.number("n", 1.0, 0.0, 3.0, true);
     // "membrane" by default (physics version 6): it converges with a and does not move with the
@@ -259,11 +273,11 @@ Scene Scene::from_json(const json& j, const std::string& source) {
     if (s.power_law_model == "membrane" && s.power_law_K > 0 && !(s.G > 0))
       p.fail("model", "\"membrane\" needs the Maxwell modulus G = E_m / E_s > 0", "G > 0");
     if (!(s.power_law_K > 0)) s.power_law_model = model_default;  // no power law: the key means nothing
-    p.refuse_unknown({"K", "n", "model"});
+    p.refuse_unknown();
   }
   {
     json conv = r.object("conventions", false);
-    ObjectReader c(conv, source, r.child_path("conventions"));
+    ObjectReader c(conv, source, r.child_path("conventions"), {"sls_viscosity", "E_b_2d", "biconcave_2d"});
     s.sls_viscosity = c.choice("sls_viscosity", std::string("physical"), {"physical", "dissertation"});
     s.E_b_2d = c.choice("E_b_2d", std::string("dimensionless"), {"dimensionless", "dissertation"});
     if (s.dim == 2 && s.sls_viscosity != "physical")
@@ -274,11 +288,13 @@ Scene Scene::from_json(const json& j, const std::string& source) {
     if (s.biconcave_2d != "equivalent" && (s.dim != 2 || s.shape != "biconcave"))
       c.fail("biconcave_2d", "the size reading of (24)-(25) applies to the 2D biconcave capsule only",
              "\"equivalent\" unless dim is 2 and shape is \"biconcave\"");
-    c.refuse_unknown({"sls_viscosity", "E_b_2d", "biconcave_2d"});
+    c.refuse_unknown();
   }
   {
     json res = r.object("resolution", false);
-    ObjectReader q(res, source, r.child_path("resolution"));
+    ObjectReader q(res, source, r.child_path("resolution"),
+                   {"a", "domain", "segments", "mesh_level", "tau", "kernel", "precision", "membrane_update",
+                    "marker_inset", "kelvin_voigt_step", "collision"});
     s.a = q.number("a", 10.0, 2.0, 200.0);
     std::vector<double> dflt = s.dim == 2 ? std::vector<double>{16, 12} : std::vector<double>{10, 10, 8};
     s.domain = q.numbers("domain", dflt, 3.0, 100.0, s.dim, s.dim);
@@ -360,27 +376,24 @@ Scene Scene::from_json(const json& j, const std::string& source) {
     s.collision = q.choice("collision", std::string(s.dim == 3 && !v5 ? "trt" : "mrt"), {"mrt", "trt"});
     if (s.dim == 2 && s.collision != "mrt")
       q.fail("collision", "the 2D rates (9) are a two-relaxation-time collision already (Lambda = 1/12)", "\"mrt\" in 2D");
-    q.refuse_unknown({"a", "domain", "segments", "mesh_level", "tau", "kernel", "precision", "membrane_update",
-                      "marker_inset", "kelvin_voigt_step", "collision"});
+    q.refuse_unknown();
   }
   {
     json proto = r.object("protocol", true);
-    ObjectReader p(proto, source, "protocol");
+    ObjectReader p(proto, source, "protocol", {"shear", "recover"});
     s.shear = read_phase(p.object("shear", true), source, "protocol.shear", true);
     s.recover = read_phase(p.object("recover", true), source, "protocol.recover", false);
-    p.refuse_unknown({"shear", "recover"});
+    p.refuse_unknown();
   }
   {
     json out = r.object("output", false);
-    ObjectReader o(out, source, "output");
+    ObjectReader o(out, source, "output", {"interval_kt", "shapes_at_kt", "snapshots"});
     s.output_interval_kt = o.number("interval_kt", 0.05, 0.0, 10.0, true);
     s.shapes_at_kt = o.numbers("shapes_at_kt", {}, 0.0, 1e5, 0, 10000);
     s.snapshots = o.choice("snapshots", std::string("none"), {"none", "vtk"});
-    o.refuse_unknown({"interval_kt", "shapes_at_kt", "snapshots"});
+    o.refuse_unknown();
   }
-  r.refuse_unknown({"dim", "physics_version", "shape", "law", "C", "Re", "Ca", "E_b", "V", "eta", "G", "c0",
-                    "reference_case", "volume_penalty", "power_law", "conventions", "resolution",
-                    "protocol", "output"});
+  r.refuse_unknown();
   ignore_other_dimension(s);
   return s;
 }
@@ -389,7 +402,7 @@ Scene Scene::load(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw SceneError(path + ": is a folder, not a scene file");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneError(path + ": cannot open the scene file");
+  if (!in) throw SceneError(path + ": cannot open the scene file: " + unreadable_file_reason(path));
   std::ostringstream text;
   text << in.rdbuf();
   json j;
@@ -398,6 +411,9 @@ Scene Scene::load(const std::string& path) {
   } catch (const JsonTextError& e) {
     throw SceneError(e.what());
   }
+  if (document_kind(j) == "campaign")
+    throw SceneError(path + ": this is a campaign file, not a scene: run it with "
+                     "`study run " + path + "`, or give capsule one member's scene.json");
   return from_json(j, path);
 }
 

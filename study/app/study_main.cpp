@@ -8,6 +8,7 @@
 #include "solver/app/cli_support.hpp"
 #include "solver/io/member_file.hpp"
 #include "solver/scene/scene.hpp"
+#include "solver/scene/version.hpp"
 #include "study/report/analysis_commands.hpp"
 #include "study/campaign/campaign_error.hpp"
 #include "study/state/campaign_owner.hpp"
@@ -22,6 +23,7 @@
 #include "study/run/script_path.hpp"
 #include "study/slurm/slurm_export.hpp"
 #include "study/state/status_json.hpp"
+#include "build_info.hpp"
 
 namespace {
 
@@ -37,7 +39,17 @@ CLI::Validator slurm_form(bool (*accepts)(const std::string&), const std::string
 
 int main_body(int argc, char** argv) {
   CLI::App app{"study: expand campaigns into members, run them with GNU Parallel, resume, report"};
-  app.footer(exit_status_help());
+  app.footer(std::string("Examples:\n"
+                         "  study plan campaigns/ch3_ca.json          members, state and cost; changes nothing\n"
+                         "  study run campaigns/demo.json             run what is not complete (resumable)\n"
+                         "  study run campaigns/ch3_ca.json --where resolution.a=5\n"
+                         "  study status campaigns/demo.json\n"
+                         "  study report campaigns/demo.json          fits, tables, figures\n"
+                         "  study plan campaigns/ch*.json             every campaign of the dissertation\n") +
+             exit_status_help());
+  app.set_version_flag("--version", std::string("study ") + capsule::build::code_version +
+                                        " (physics version " + capsule::physics_version + ")",
+                       "print the code version and physics version, then exit");
   app.require_subcommand(1);
   std::string results_dir = "results";
   const auto count = capsule::cli::whole_number_at_least(1);
@@ -45,7 +57,7 @@ int main_body(int argc, char** argv) {
   std::vector<std::string> plan_files;
   auto* plan = app.add_subcommand("plan", "list the members, their state and cost; changes nothing");
   plan->add_option("campaign", plan_files,
-                   "campaign JSON files, or folders of them (campaigns/dissertation/: every campaign, shared members "
+                   "campaign JSON files, or folders of them (campaigns/ch*.json: every campaign of the dissertation, shared members "
                    "counted once in the total)")
       ->required()->expected(1, -1);
   plan->add_option("--results", results_dir, "results folder")->capture_default_str();

@@ -7,6 +7,7 @@
 
 #include "analysis/report/analysis_block.hpp"
 #include "solver/scene/json_text.hpp"
+#include "solver/scene/user_hints.hpp"
 #include "study/campaign/campaign_error.hpp"
 #include "study/campaign/json_path.hpp"
 
@@ -27,7 +28,9 @@ void refuse_unknown_keys(const json& object, const std::set<std::string>& known,
     if (known.count(it.key())) continue;
     std::string list;
     for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-    throw campaign_error(source, key_path(path, it.key()), "unknown key", "one of " + list);
+    throw campaign_error(source, key_path(path, it.key()),
+                         unknown_key_problem(it.key(), std::vector<std::string>(known.begin(), known.end())),
+                         "one of " + list);
   }
 }
 
@@ -142,6 +145,10 @@ Campaign parse_campaign(const std::string& text, const std::string& source) {
   }
   if (!doc.is_object())
     throw campaign_error(source, "", "the document is a " + std::string(doc.type_name()), "a JSON object");
+  if (document_kind(doc) == "scene")
+    throw campaign_error(source, "", "this is a scene file, not a campaign: run it with `capsule " + source +
+                                         " -o member.h5`, or make it a campaign's \"base\"",
+                         "a campaign {\"name\", \"base\", \"sweep\", ...}");
   refuse_unknown_keys(doc, {"name", "description", "base", "sweep", "cases", "analysis"}, source, "");
 
   Campaign c;
@@ -191,11 +198,14 @@ Campaign parse_campaign(const std::string& text, const std::string& source) {
 
 namespace {
 
-// Campaign files of this name in the folder's subfolders (campaigns/ groups them:
-// dissertation/, accuracy/, probes/), for a path that names one at its old place.
+// Campaign files of this name in the nearest existing folder of the path and one level below
+// it (campaigns/ keeps the dissertation's campaigns at its top and groups the others:
+// accuracy/, probes/), for a path that names one at another place.
 std::string same_name_below(const std::filesystem::path& path) {
   std::error_code ec;
-  const std::filesystem::path folder = path.parent_path().empty() ? "." : path.parent_path();
+  std::filesystem::path folder = path.parent_path();
+  while (!folder.empty() && !std::filesystem::is_directory(folder, ec)) folder = folder.parent_path();
+  if (folder.empty()) folder = ".";
   std::string found;
   for (std::filesystem::recursive_directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
     if (it.depth() > 1) it.disable_recursion_pending();
@@ -211,7 +221,7 @@ Campaign load_campaign(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     const std::string moved = same_name_below(path);
-    throw campaign_error(path, "", "cannot open the campaign file",
+    throw campaign_error(path, "", "cannot open the campaign file: " + unreadable_file_reason(path),
                          moved.empty() ? "" : "a campaign file; this name is at " + moved);
   }
   std::ostringstream text;

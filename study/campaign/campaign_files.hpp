@@ -1,6 +1,6 @@
 #pragma once
 // The campaign files a command line names: files as given, and every *.json below a folder
-// (sorted by path, so campaigns/dissertation/ runs in the same order everywhere). Throws
+// (sorted by path, so campaigns/accuracy/ runs in the same order everywhere). Throws
 // CampaignError for a name that is neither, or a folder that holds none.
 #include <string>
 #include <vector>

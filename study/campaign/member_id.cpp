@@ -14,13 +14,23 @@ std::uint64_t fnv1a_64(std::string_view bytes) {
 }
 
 std::string member_hash_text(const nlohmann::json& canonical_scene, const std::string& physics_version) {
+  if (!canonical_scene.is_object()) return canonical_scene.dump() + "\nphysics_version=" + physics_version;
   // The canonical scene carries its version (so the solver runs it); the hash keeps the text of
   // the scene without it and the version after it, as before the scene carried one.
-  if (!canonical_scene.is_object() || !canonical_scene.contains("physics_version"))
-    return canonical_scene.dump() + "\nphysics_version=" + physics_version;
   nlohmann::json scene = canonical_scene;
   scene.erase("physics_version");
+  // What is only written (shapes, snapshots) does not change what runs: the hash reads those
+  // keys at their defaults, the values every member had before they were left out, so no id
+  // changed. output.interval_kt stays: the protocol's stop tests read the rows it spaces.
+  if (auto out = scene.find("output"); out != scene.end() && out->is_object())
+    for (const auto& entry : output_only_defaults().items())
+      if (out->contains(entry.key())) (*out)[entry.key()] = entry.value();
   return scene.dump() + "\nphysics_version=" + physics_version;
+}
+
+const nlohmann::json& output_only_defaults() {
+  static const nlohmann::json defaults = {{"shapes_at_kt", nlohmann::json::array()}, {"snapshots", "none"}};
+  return defaults;
 }
 
 std::string member_id(const nlohmann::json& canonical_scene) {

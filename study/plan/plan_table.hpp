@@ -29,7 +29,7 @@ struct PlanSummary {
 
 PlanSummary print_plan(const Campaign& campaign, const ResultsLayout& layout, std::ostream& out);
 
-// Several campaigns planned together (a folder of them, e.g. campaigns/dissertation/): each
+// Several campaigns planned together (several files, or a folder of them, e.g. campaigns/ch*.json): each
 // one's plan, then the total with every member shared between campaigns counted once (the
 // first campaign to run it runs it; the others copy it, state/member_reuse.hpp).
 void print_plans(const std::vector<std::string>& campaign_files, const std::filesystem::path& results_dir,

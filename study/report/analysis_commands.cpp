@@ -77,6 +77,11 @@ int report_campaign(const CampaignSurvey& survey, const ReportOptions& options, 
   if (!not_run.empty())
     out << not_run.size() << " of " << survey.members.size()
         << " members have no member file yet: the report says so in INCOMPLETE.md (see `study status`)\n";
+  // Figures of a campaign that has not run would be empty axes.
+  if (std::none_of(request.members.begin(), request.members.end(),
+                   [](const analysis::MemberRef& r) { return fs::exists(r.path); }))
+    request.no_figures = "no member of this campaign has a member file yet (run it first: study run " +
+                         survey.campaign.source + ")";
   fs::remove_all(staging);
   analysis::ReportSummary summary;
   try {

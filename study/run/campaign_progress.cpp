@@ -24,27 +24,47 @@ double running_member_seconds_left(const MemberProgress& progress, const CostEst
   return std::min(own, steps_left / progress.steps_per_second);
 }
 
+std::string progress_line(const std::string& campaign, const ProgressCounts& c, double elapsed_seconds,
+                          double eta_seconds, bool bar) {
+  const double fraction = std::clamp(c.fraction_done, 0.0, 1.0);
+  const int percent = c.running + c.left == 0 ? 100 : std::min(99, static_cast<int>(std::floor(100.0 * fraction)));
+  std::ostringstream line;
+  line << "campaign " << campaign << " ";
+  if (bar) {
+    constexpr int width = 20;
+    const int filled = std::min(width, static_cast<int>(std::floor(width * percent / 100.0)));
+    line << "[" << std::string(filled, '#') << std::string(width - filled, '-') << "] ";
+  }
+  line << percent << "% | " << c.done << " done, " << c.running << " running, " << c.left << " left | "
+       << format_duration(elapsed_seconds) << " elapsed, ETA "
+       << (c.running + c.left == 0 ? "0s" : eta_seconds < 0.5 ? "<1s" : format_duration(eta_seconds));
+  return line.str();
+}
+
 CampaignProgress::CampaignProgress(const CampaignSurvey& survey, std::vector<std::size_t> to_run, int jobs, int threads,
                                    bool terminal, std::ostream& out)
     : survey_(survey), to_run_(std::move(to_run)), measured_(to_run_.size(), false), speed_(measure_speed(survey)),
-      jobs_(std::max(1, jobs)), threads_(std::max(1, threads)), terminal_(terminal), out_(out) {
+      jobs_(std::max(1, jobs)), threads_(std::max(1, threads)), terminal_(terminal), out_(out), start_(now_seconds()) {
   for (std::size_t i : to_run_) cost_.push_back(estimate_cost(survey.members[i].scene, &speed_.lengths));
 }
 
 CampaignProgress::Counts CampaignProgress::count() {
   Counts c;
-  double remaining = 0, longest = 0;
+  double remaining = 0, longest = 0, work = 0, work_done = 0;
   for (std::size_t k = 0; k < to_run_.size(); ++k) {
     const Member& m = survey_.members[to_run_[k]];
     const MemberPaths p = survey_.layout.member(m);
+    const int dim = m.scene.at("dim").get<int>();
+    const double estimate = estimated_member_seconds(cost_[k], dim, threads_, speed_);
+    work += estimate;
     std::error_code ec;
     if (std::filesystem::exists(p.h5, ec)) {
       ++c.done;
+      c.reported = true;
+      work_done += estimate;
       if (!measured_[k]) measured_[k] = add_measurement(speed_, m, p);  // later estimates learn from it
       continue;
     }
-    const int dim = m.scene.at("dim").get<int>();
-    const double estimate = estimated_member_seconds(cost_[k], dim, threads_, speed_);
     const MemberCondition cond = inspect_member(p, m.id);
     if (cond.state == MemberState::running) {
       ++c.running;
@@ -52,28 +72,44 @@ CampaignProgress::Counts CampaignProgress::count() {
           running_member_seconds_left(cond.progress, cost_[k], speed_.for_dim(dim), estimate);
       remaining += eta;
       longest = std::max(longest, eta);
+      if (cond.progress.steps_per_second > 0) {
+        c.reported = true;
+        // The share of its steps done: those behind it against those its ETA leaves.
+        const double steps_done = cond.progress.kt * cost_[k].steps_per_kt;
+        const double steps_left = eta * cond.progress.steps_per_second;
+        if (steps_done + steps_left > 0) work_done += estimate * steps_done / (steps_done + steps_left);
+      }
     } else {
       ++c.left;
       remaining += estimate;
     }
   }
   c.eta_seconds = std::max(longest, remaining / jobs_);
+  c.fraction_done = work > 0 ? work_done / work : 0.0;
   return c;
 }
 
 void CampaignProgress::tick() {
   const double now = now_seconds();
-  if (now - last_print_ < (terminal_ ? 1.0 : 30.0)) return;
-  last_print_ = now;
-  const Counts c = count();
-  std::ostringstream line;
-  line << "campaign " << survey_.campaign.name << ": " << c.done << " done, " << c.running << " running, " << c.left
-       << " left; ETA " << (c.done + c.running + c.left == c.done ? "0s" : format_duration(c.eta_seconds));
+  if (now - last_tick_ < 1.0) return;
+  last_tick_ = now;
+  show(count(), now - start_);
+}
+
+void CampaignProgress::show(const Counts& c, double elapsed) {
+  const double eta = eta_.update(elapsed, c.eta_seconds, c.reported);  // every tick, so it smooths in time
+  const bool changed = !printed_ || c.done != last_done_ || c.running != last_running_;
+  if (!terminal_ && !changed && elapsed - last_print_ < 300.0) return;
+  last_print_ = elapsed;
+  last_done_ = c.done;
+  last_running_ = c.running;
+  printed_ = true;
+  const std::string line = progress_line(survey_.campaign.name, c, elapsed, eta, terminal_);
   if (terminal_) {
-    out_ << "\r" << line.str() << "\033[K" << std::flush;
+    out_ << "\r" << line << "\033[K" << std::flush;
     drew_ = true;
   } else {
-    out_ << line.str() << "\n" << std::flush;
+    out_ << line << "\n" << std::flush;
   }
 }
 

@@ -63,10 +63,25 @@ TEST_CASE("study plan prints every member and changes nothing", "[study]") {
   fs::remove_all(dir);
 }
 
-TEST_CASE("a campaign named at its place before the campaigns were grouped is found for the user", "[study]") {
-  const auto r = testing::run_study({"plan", "campaigns/ch3_ca.json"}, CAPSULE_SOURCE_DIR);
-  INFO(r.output);
-  CHECK(r.exit_code == 2);
-  CHECK(r.output.find("cannot open the campaign file") != std::string::npos);
-  CHECK(r.output.find("this name is at campaigns/dissertation/ch3_ca.json") != std::string::npos);
+TEST_CASE("the dissertation's campaigns are at the top of campaigns/, the others found by name", "[study]") {
+  // The short path every document uses is a real file.
+  const auto plan = testing::run_study({"plan", "campaigns/ch3_ca.json"}, CAPSULE_SOURCE_DIR);
+  INFO(plan.output);
+  CHECK(plan.exit_code == 0);
+  CHECK(plan.output.find("cannot open") == std::string::npos);
+  // A name at another place: the OS reason, and where the name is.
+  const auto grouped = testing::run_study({"plan", "campaigns/precision_double.json"}, CAPSULE_SOURCE_DIR);
+  INFO(grouped.output);
+  CHECK(grouped.exit_code == 2);
+  CHECK(grouped.output.find("cannot open the campaign file: No such file or directory") != std::string::npos);
+  CHECK(grouped.output.find("this name is at campaigns/accuracy/precision_double.json") != std::string::npos);
+  const auto old_place = testing::run_study({"plan", "campaigns/dissertation/ch3_ca.json"}, CAPSULE_SOURCE_DIR);
+  INFO(old_place.output);
+  CHECK(old_place.exit_code == 2);
+  CHECK(old_place.output.find("this name is at campaigns/ch3_ca.json") != std::string::npos);
+  // A name without its .json.
+  const auto bare = testing::run_study({"plan", "campaigns/demo"}, CAPSULE_SOURCE_DIR);
+  INFO(bare.output);
+  CHECK(bare.exit_code == 2);
+  CHECK(bare.output.find("did you mean campaigns/demo.json?") != std::string::npos);
 }

@@ -1,5 +1,5 @@
 // Several campaigns at once: `study plan` and `study run` take files or folders of them (a
-// whole dissertation: campaigns/dissertation/), plan the total with shared members counted
+// whole dissertation: campaigns/ch*.json), plan the total with shared members counted
 // once, and run the campaigns one after another so a later one copies what an earlier one ran.
 #include <catch2/catch.hpp>
 

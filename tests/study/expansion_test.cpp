@@ -2,11 +2,13 @@
 #include <catch2/catch.hpp>
 
 #include "solver/scene/version.hpp"
+#include <filesystem>
 #include <set>
 
 #include "study/campaign/campaign.hpp"
 #include "study/campaign/expansion.hpp"
 #include "study/campaign/member_id.hpp"
+#include "solver/io/member_file.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace capsule::study;
@@ -161,4 +163,50 @@ TEST_CASE("one scene twice in a case is refused; shared by cases it is one membe
   CHECK(members[1].other_cases == std::vector<std::string>{"E_b"});
   CHECK(members[2].case_name == "E_b");
   CHECK(members[2].scene["E_b"].get<double>() == 0.01);
+}
+
+TEST_CASE("output-only keys leave the member id alone; the output interval does not", "[study]") {
+  const json doc = testing::tiny_campaign("out", {0.1}, 1, 1);
+  const Member plain = expand_text(doc).at(0);
+  json shapes = doc;
+  shapes["base"]["output"]["shapes_at_kt"] = {0.5, 1.0};
+  const Member with_shapes = expand_text(shapes).at(0);
+  CHECK(with_shapes.id == plain.id);
+  CHECK(with_shapes.scene["output"]["shapes_at_kt"] == json({0.5, 1.0}));  // still written, and run
+  json three = doc;
+  three["base"]["dim"] = 3;
+  three["base"]["shape"] = "sphere";
+  three["base"]["resolution"] = {{"a", 4}};
+  const std::string id_3d = expand_text(three).at(0).id;
+  three["base"]["output"]["snapshots"] = "vtk";
+  three["base"]["output"]["shapes_at_kt"] = {1.0};
+  CHECK(expand_text(three).at(0).id == id_3d);
+  // The stop tests read the rows the interval spaces: another interval is another run.
+  json coarser = doc;
+  coarser["base"]["output"]["interval_kt"] = 0.2;
+  CHECK(expand_text(coarser).at(0).id != plain.id);
+}
+
+TEST_CASE("every shipped member's id is the hash of its scene.json and names its folder and member file", "[study]") {
+  const std::filesystem::path results = std::filesystem::path(CAPSULE_SOURCE_DIR) / "results";
+  std::size_t members = 0, files = 0;
+  for (const auto& campaign : std::filesystem::directory_iterator(results)) {
+    if (!std::filesystem::is_directory(campaign.path() / "members")) continue;
+    for (const auto& member : std::filesystem::directory_iterator(campaign.path() / "members")) {
+      const auto scene_path = member.path() / "scene.json";
+      if (!std::filesystem::exists(scene_path)) continue;
+      INFO(scene_path.string());
+      const json scene = json::parse(testing::read_text(scene_path));
+      const std::string folder = member.path().filename().string();
+      const std::string id = member_id(scene);
+      CHECK(folder.substr(folder.size() - 16) == id);
+      ++members;
+      if (const auto h5 = member.path() / "member.h5"; std::filesystem::exists(h5)) {
+        CHECK(capsule::io::read_member_status(h5.string()).member_id == id);
+        ++files;
+      }
+    }
+  }
+  CHECK(members >= 500);
+  CHECK(files >= 500);
 }

@@ -62,3 +62,18 @@ TEST_CASE("study report of a campaign still under way names the members it lacks
   CHECK_FALSE(fs::exists(incomplete));
   fs::remove_all(dir);
 }
+
+TEST_CASE("study report of a campaign that never ran writes no figures and says so", "[study]") {
+  const fs::path dir = testing::scratch_dir("report_never_ran");
+  testing::write_text(dir / "c.json", testing::tiny_campaign("never_ran", {0.02, 0.05}, 0.3, 0).dump());
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const auto report = testing::run_study({"report", "c.json"}, dir);
+  INFO(report.output);
+  CHECK_THAT(report.output, Catch::Contains("figures skipped: no member of this campaign has a member file yet"));
+  const fs::path figures = s.layout.report_dir() / "figures";
+  bool png = false;
+  if (fs::exists(figures))
+    for (const auto& e : fs::directory_iterator(figures)) png = png || e.path().extension() == ".png";
+  CHECK_FALSE(png);
+  fs::remove_all(dir);
+}

@@ -178,3 +178,62 @@ TEST_CASE("capsule rigid-circle writes a summary row and a series; bad options e
   }
   fs::remove_all(dir);
 }
+
+TEST_CASE("capsule names a misspelt key with the key it is near, before any missing one", "[capsule2d]") {
+  const fs::path dir = scratch();
+  std::ifstream in(std::string(CAPSULE_SOURCE_DIR) + "/tests/data/scenes/circle_quick_2d.json");
+  nlohmann::json j = nlohmann::json::parse(in);
+  j["Eb"] = j["E_b"];
+  j.erase("E_b");
+  std::ofstream(dir / "eb.json") << j.dump();
+  const Result r = capsule("check " + quote((dir / "eb.json").string()));
+  INFO(r.output);
+  CHECK(r.exit_code == 2);
+  CHECK(r.output.find("eb.json: Eb: unknown key, did you mean E_b?") != std::string::npos);
+  CHECK(r.output.find("missing required key") == std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("capsule says why a scene cannot be opened, and that a campaign is not a scene", "[capsule2d]") {
+  const fs::path dir = scratch();
+  const Result missing = capsule("check " + quote((dir / "none.json").string()));
+  INFO(missing.output);
+  CHECK(missing.exit_code == 2);
+  CHECK(missing.output.find("cannot open the scene file: No such file or directory") != std::string::npos);
+  // A name without .json: the file meant.
+  std::ifstream in(std::string(CAPSULE_SOURCE_DIR) + "/tests/data/scenes/circle_quick_2d.json");
+  std::ofstream(dir / "quick.json") << in.rdbuf();
+  const Result bare = capsule("check " + quote((dir / "quick").string()));
+  INFO(bare.output);
+  CHECK(bare.output.find("did you mean " + (dir / "quick.json").string() + "?") != std::string::npos);
+  const Result campaign = capsule("check " + quote(std::string(CAPSULE_SOURCE_DIR) + "/campaigns/demo.json"));
+  INFO(campaign.output);
+  CHECK(campaign.exit_code == 2);
+  CHECK(campaign.output.find("this is a campaign file, not a scene") != std::string::npos);
+  CHECK(campaign.output.find("unknown key") == std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("capsule --version, examples in --help, and the subcommands through CLI11", "[capsule2d]") {
+  const Result version = capsule("--version");
+  INFO(version.output);
+  CHECK(version.exit_code == 0);
+  CHECK(version.output.rfind("capsule ", 0) == 0);
+  CHECK(version.output.find("(physics version ") != std::string::npos);
+  const Result help = capsule("--help");
+  CHECK(help.output.find("Examples:") != std::string::npos);
+  CHECK(help.output.find("capsule check tests/data/scenes/circle_quick_2d.json") != std::string::npos);
+  // Every subcommand is listed by CLI11 and has its own --help with an example or its exit status.
+  for (const std::string& sub : {"check", "version", "bench", "reference-bim", "rigid-sphere", "rigid-circle"}) {
+    INFO(sub);
+    CHECK(help.output.find("  " + sub) != std::string::npos);
+    const Result sub_help = capsule(sub + " --help");
+    CHECK(sub_help.exit_code == 0);
+    CHECK(sub_help.output.find("Exit status:") != std::string::npos);
+  }
+  // A subcommand's options belong to it: the run's -o is not taken by check.
+  CHECK(capsule("check " + scene + " --frob").exit_code == 2);
+  // `capsule version` stays JSON, as study run-member reads it.
+  const Result json = capsule("version");
+  CHECK(nlohmann::json::parse(json.output).contains("physics_version"));
+}
