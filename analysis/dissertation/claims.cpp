@@ -48,8 +48,8 @@ std::vector<ClaimResult> evaluate_claims(const DissertationResults& res) {
   once(claim_5_1_3_ratios_differ);
   push(claim_5_2_pairs(res, true));
   push(claim_5_2_pairs(res, false));
-  once(claim_5_2_inclination), once(claim_5_2_n), once(claim_5_2_gamma_range), once(claim_5_2_mesh), once(claim_5_2_gamma),
-      once(claim_5_2_fig66);
+  once(claim_5_2_inclination), once(claim_5_2_settled), once(claim_5_2_n), once(claim_5_2_gamma_range), once(claim_5_2_mesh),
+      once(claim_5_2_2_initial), once(claim_5_2_gamma), once(claim_5_2_fig66);
   return out;
 }
 

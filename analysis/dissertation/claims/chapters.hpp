@@ -73,5 +73,7 @@ ClaimResult claim_5_2_gamma_range(const DissertationResults& res);
 ClaimResult claim_5_2_mesh(const DissertationResults& res);
 ClaimResult claim_5_2_gamma(const DissertationResults& res);
 ClaimResult claim_5_2_fig66(const DissertationResults& res);
+ClaimResult claim_5_2_settled(const DissertationResults& res);
+ClaimResult claim_5_2_2_initial(const DissertationResults& res);
 
 }  // namespace capsule::analysis::claims

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <tuple>
 #include <limits>
 
 #include "analysis/dissertation/claims.hpp"
@@ -54,14 +55,14 @@ void write_drift_member(const std::filesystem::path& file, double volume, double
   w.finish("complete");
 }
 
-// A ch5_oscillatory member: five periods T = 4 of oscillatory shear, D_xy = peak |sin(pi t / T)|.
-void write_oscillating_member(const std::filesystem::path& file, double peak) {
+// A ch5_oscillatory member: five periods T = 4 of oscillatory shear, D_xy = peak |sin(pi (t - lag) / T)|.
+void write_oscillating_member(const std::filesystem::path& file, double peak, double lag = 0.0) {
   std::filesystem::create_directories(file.parent_path());
   capsule::io::MemberWriter w(file.string());
   w.set_scene({{"dim", 3}, {"Ca", 0.1}, {"E_b", 0.0}, {"V", 1.0}, {"protocol", {{"shear", {{"oscillatory_period_kt", 4.0}}}}}});
   for (int i = 0; i <= 400; ++i) {
     const double t = 0.05 * i;
-    w.append({{"kt", t}, {"D_xy", peak * std::abs(std::sin(M_PI * t / 4.0))}, {"theta", 0.3}, {"shear_on", 1.0}});
+    w.append({{"kt", t}, {"D_xy", peak * std::abs(std::sin(M_PI * (t - lag) / 4.0))}, {"theta", 0.3}, {"shear_on", 1.0}});
   }
   w.set_markers({{"t_max", k_nan}, {"D_max", k_nan}, {"t_stop", 20.0}, {"D_stop", 0.0}, {"t_min", k_nan}, {"D_min", k_nan},
                  {"t_end", 20.0}, {"D_inf", k_nan}});
@@ -148,4 +149,26 @@ TEST_CASE("Dissertation claims: in oscillatory shear the n = 1 power law is the 
     CHECK(c.verdict == Verdict::cannot_tell);
     CHECK(c.measured.find("powerlaw_n064: 0.216 at resolution.a 5, 0.27 at 7 (20 %)") != std::string::npos);
   }
+}
+
+TEST_CASE("Dissertation claims: in oscillatory shear the three models deform alike at first (Fig. 66)", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_oscillatory_initial");
+  const auto dir = tmp.path / "ch5_oscillatory";
+  const auto write = [&](double n1_peak, double n1_lag) {
+    nlohmann::json m = nlohmann::json::array();
+    for (const auto& [name, peak, lag] : {std::tuple{"kv", 0.28, 0.0}, std::tuple{"powerlaw_n1", n1_peak, n1_lag}, std::tuple{"powerlaw_n064", 0.27, 0.0}}) {
+      const std::string rel = std::string("members/") + name + "/member.h5";
+      write_oscillating_member(dir / rel, peak, lag);
+      m.push_back(member_json(name, name, {}, {}, rel));
+    }
+    write_fits(tmp.path, "ch5_oscillatory", m);
+    return judge(tmp);
+  };
+  const auto alike = write(0.275, 0.0);
+  const auto& initial = find_claim(alike, "5.2.2", "initial deformation agrees very well");
+  INFO(initial.measured);
+  CHECK(initial.verdict == Verdict::agrees);
+  CHECK(initial.measured.find("peak D_xy in the first period: kv 0.28, powerlaw_n1 0.275, powerlaw_n064 0.27") == 0);
+  const auto apart = write(0.1, 1.0);  // a third of the others' first peak
+  CHECK(find_claim(apart, "5.2.2", "initial deformation agrees very well").verdict == Verdict::differs);
 }

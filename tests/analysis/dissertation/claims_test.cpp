@@ -917,3 +917,31 @@ TEST_CASE("Dissertation claims: Fig. 7, the sphere against Ramanujan and Pozriki
   CHECK(close.measured == "Ca0.05: max |D_xy - curve| 0.011 over 40 points; Ca0.1: max |D_xy - curve| 0.015 over 36 points");
   CHECK(judge(0.03).verdict == Verdict::differs);
 }
+
+TEST_CASE("Dissertation claims: 5.2.1 settled, the power-law capsule's D_xy constant over the last quarter of the shear", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_settled");
+  const auto dir = tmp.path / "ch5_powerlaw";
+  // Three case n members: D_xy 0.2 (1 - e^(-t/0.8)) plus a swing of `swing` (peak to peak) with period 2 kt.
+  const auto judge = [&](double swing) {
+    nlohmann::json m = nlohmann::json::array();
+    for (const double n : {1.0, 0.64, 0.32}) {
+      const std::string slug = "n" + short_number(n), rel = "members/" + slug + "/member.h5";
+      std::filesystem::create_directories((dir / rel).parent_path());
+      capsule::io::MemberWriter w((dir / rel).string());
+      w.set_scene({{"dim", 3}, {"Ca", 0.1}, {"E_b", 0.0}, {"V", 1.0}, {"power_law", {{"K", 10.0}, {"n", n}}}});
+      for (int i = 0; i <= 200; ++i) {
+        const double t = 0.05 * i;
+        w.append({{"kt", t}, {"D_xy", 0.2 * (1.0 - std::exp(-t / 0.8)) + 0.5 * swing * std::sin(M_PI * t)}, {"theta", 0.3}, {"shear_on", 1.0}});
+      }
+      finish_shear_member(w, 10.0, 0.2, 10.0);
+      m.push_back(member_json(slug, "n", {{"power_law.n", n}}, {}, rel));
+    }
+    write_fits(tmp.path, "ch5_powerlaw", m);
+    return find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "5.2.1", "stable ellipsoid");
+  };
+  const ClaimResult settled = judge(0.0);
+  INFO(settled.measured);
+  CHECK(settled.verdict == Verdict::agrees);
+  CHECK(settled.measured.find("n 1: D_xy 0.2 to 0.2 over kt 7.5-10") == 0);
+  CHECK(judge(0.03).verdict == Verdict::differs);  // a swing of 0.03 over the last quarter
+}
