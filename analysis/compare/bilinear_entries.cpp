@@ -1,6 +1,7 @@
 #include "analysis/compare/bilinear_entries.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "analysis/report/table.hpp"
 
@@ -33,7 +34,18 @@ std::vector<BilinearEntry> read_bilinear_entries(const std::string& campaign, co
     const std::string case_name = l.value("case", ""), target = l.value("target", ""), coef = l.value("coefficient", "");
     for (auto& be : out) {
       if (be.case_name != case_name || be.target != target) continue;
-      if (l.value("ok", false)) be.ladder_error[coef] = number_or_nan(l, "error_estimate");
+      if (l.value("ok", false)) {
+        be.ladder_error[coef] = number_or_nan(l, "error_estimate");
+        be.ladder_extrapolated[coef] = number_or_nan(l, "extrapolated");
+      }
+      // The next coarser level: of the other levels, the value nearest this entry's.
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const auto& lv : l.value("levels", nlohmann::json::array())) {
+        const double value = number_or_nan(lv, "value"), distance = std::abs(value - be.level);
+        if (!(distance > 1e-12) || !(distance < nearest)) continue;
+        nearest = distance;
+        be.ladder_coarser[coef] = number_or_nan(lv, "coefficient");
+      }
       be.ladder_note[coef] = l.value("note", "");
       break;
     }

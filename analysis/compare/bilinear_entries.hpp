@@ -21,6 +21,8 @@ struct BilinearEntry {
   // (the finest) level's value from fits.json "bilinear_ladder", or why there is none.
   std::map<std::string, double> ladder_error;
   std::map<std::string, std::string> ladder_note;
+  // The same coefficients Richardson-extrapolated to zero spacing, and at the next coarser level.
+  std::map<std::string, double> ladder_extrapolated, ladder_coarser;
 };
 
 // The "bilinear" array of a parsed fits.json (write_report's layout). With a ladder the

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 
+#include "analysis/dissertation/chapter_story.hpp"
 #include "analysis/dissertation/chapter_tables.hpp"
 #include "analysis/dissertation/deviations.hpp"
 #include "analysis/dissertation/document_links.hpp"
@@ -58,10 +59,14 @@ std::string bottom_line_markdown(const std::vector<ClaimResult>& rows, const Dis
   md += "- **Cannot tell:** " + claims_count(number_of(ClaimVerdict::cannot_tell)) + ", for want of a campaign, a member or a result converged in resolution";
   if (number_of(ClaimVerdict::cannot_tell) > 0) md += ": " + claim_links(keys_with[ClaimVerdict::cannot_tell]);
   md += ".\n";
-  md += "- **Table 2:** " + std::to_string(s.coefficients_overlap) + " of 18 coefficients share a point of their 95 % interval with the text's, " +
-        std::to_string(s.coefficients_overlap_with_resolution) + " of " +
-        std::to_string(s.coefficients_overlap_with_resolution + s.coefficients_disjoint_with_resolution) +
-        " once the ladder's resolution error is added.\n";
+  md += "- **Table 2:** " + std::to_string(s.coefficients_overlap) + " of 18 coefficients share a point of their 95 % interval with the text's; " +
+        std::to_string(s.coefficients_extrapolated_pass) + " of " +
+        std::to_string(s.coefficients_extrapolated_pass + s.coefficients_extrapolated_fail) +
+        " extrapolated over the ladder pass the difference test (|difference| <= 1.96 combined sigma); from the next coarser level "
+        "to the finest " + std::to_string(s.coefficients_toward) + " move toward the text, " + std::to_string(s.coefficients_away) + " away.\n";
+  md += "- **The text against its own rules:** the text's printed numbers pass the rule of " + claims_count(s.text_passes) +
+        ", fail that of " + claims_count(s.text_fails) + "; " + std::to_string(s.text_no_numbers) +
+        " claims rest on figures alone (no numbers to run the rule on).\n";
   // The known causes behind the most differences, most first (ties in the order of deviations.md).
   std::vector<std::pair<std::size_t, int>> causes(differing_per_cause.begin(), differing_per_cause.end());
   std::stable_sort(causes.begin(), causes.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
@@ -73,6 +78,7 @@ std::string bottom_line_markdown(const std::vector<ClaimResult>& rows, const Dis
                               " (" + std::to_string(count) + ")");
     md += "- **Known causes** linked from most of the claims that differ or hold in part: " + list + ".\n";
   }
+  md += "\n**Where the text holds, by chapter:**\n\n" + chapter_story_markdown(rows);
   return md;
 }
 

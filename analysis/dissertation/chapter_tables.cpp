@@ -29,7 +29,9 @@ std::string clip_text(const std::string& text, std::size_t limit) {
   static const std::string ellipsis = " …";
   if (text.size() <= limit) return text;
   if (limit <= ellipsis.size()) return ellipsis.substr(1);
-  std::size_t cut = text.rfind(' ', limit - ellipsis.size());
+  // At the end of a clause ("; ") where one ends in the last two thirds of the room, else at a word.
+  std::size_t cut = text.rfind("; ", limit - ellipsis.size() - 1);
+  if (cut == std::string::npos || cut < limit / 3) cut = text.rfind(' ', limit - ellipsis.size());
   if (cut == std::string::npos || cut == 0) cut = limit - ellipsis.size();
   while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;  // never inside a UTF-8 character
   std::string out = text.substr(0, cut);
@@ -48,19 +50,22 @@ std::string chapter_tables_markdown(const std::vector<ClaimResult>& rows) {
   std::string md;
   for (const auto& chapter : text_chapters()) {
     Table t;
-    t.header = {"claim", "the text", "the toolkit", "verdict", "cause"};
+    t.header = {"claim", "the text", "the toolkit", "verdict", "text passes", "cause"};
     for (const auto& r : rows) {
       if (claim_chapter(r) != chapter.number) continue;
       const std::string claim = anchor_link(r.key, claim_anchor(r.key));
-      const std::string verdict = verdict_text(r.verdict);
+      const std::string levels = levels_text(r.levels);
+      const std::string verdict = std::string(verdict_text(r.verdict)) + (levels.empty() ? "" : " (" + levels + ")");
       const std::string causes = cause_links(r.key);
+      const std::string text_passes = text_passes_text(r.text_passes);
       // What the claim, verdict and causes leave of the row goes to the two texts: the text's
       // words first (up to half and a little more), the toolkit's numbers the rest.
-      const std::size_t fixed = claim.size() + verdict.size() + causes.size() + row_overhead(t.header.size());
+      const std::size_t fixed = claim.size() + verdict.size() + text_passes.size() + causes.size() + row_overhead(t.header.size());
       const std::size_t left = k_short_row_characters > fixed + 40 ? k_short_row_characters - fixed : 40;
-      const std::string text = clip_text(r.statement, std::max<std::size_t>(left * 11 / 20, left - r.measured.size()));
-      const std::string toolkit = clip_text(r.measured, left - text.size());
-      t.rows.push_back({claim, text, toolkit, verdict, causes});
+      const std::size_t text_room = std::max<std::size_t>(left * 11 / 20, left > r.measured.size() ? left - r.measured.size() : 0);
+      const std::string text = clip_text(r.statement, text_room);
+      const std::string toolkit = clip_text(r.measured, left > text.size() + 20 ? left - text.size() : 20);
+      t.rows.push_back({claim, text, toolkit, verdict, text_passes, causes});
     }
     md += "### " + chapter.title + "\n\n" + t.to_markdown() + "\n";
   }

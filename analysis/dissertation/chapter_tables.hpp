@@ -12,7 +12,7 @@
 
 namespace capsule::analysis {
 
-inline constexpr std::size_t k_short_row_characters = 300;
+inline constexpr std::size_t k_short_row_characters = 200;
 
 // The chapters of the text that have claims, in order (2-5), with what each is about.
 struct TextChapter {
@@ -21,7 +21,8 @@ struct TextChapter {
 };
 const std::vector<TextChapter>& text_chapters();
 
-// `text` cut to at most `limit` bytes at a blank, with " …" appended when cut.
+// `text` cut to at most `limit` bytes at the end of a clause ("; ") or else at a blank, with " …"
+// appended when cut.
 std::string clip_text(const std::string& text, std::size_t limit);
 
 // The known causes of claim `key` as links "[C3](#cause-3), [C8](#cause-8)" ("" when none).

@@ -18,6 +18,14 @@ std::string claim_details_markdown(const std::vector<ClaimResult>& rows, const s
       const ClaimResult& r = rows[at];
       md += "- **The text:** " + r.statement + ". **Tested by:** " + r.campaign + ". **Criterion:** " + r.criterion +
             ".\n  **Verdict:** " + verdict_text(r.verdict) + ". **The toolkit measures:** " + r.measured + ".\n";
+      if (!r.coarse_measured.empty())
+        md += "  **Levels:** " + std::string(levels_text(r.levels)) + (r.levels == Levels::not_judged ? "not judged at the finest level" : "") +
+              "; the next coarser level: " + r.coarse_measured + ".\n";
+      else
+        md += "  **Levels:** one level (no campaign it reads ships a point at two levels).\n";
+      md += "  **The text passes its rule:** " + std::string(text_passes_text(r.text_passes)) +
+            (r.text_numbers.empty() ? std::string(" (the text prints no numbers this rule can run on)") : " (" + r.text_numbers + ")") + ".\n";
+      if (!r.reread.empty()) md += "  **Re-read:** " + r.reread + "\n";
     }
     for (const TextFigure* f : figures_of_claim(key))
       md += "- **Fig. " + f->number + "** (" + f->shows + "): " + figure_links(*f, results_dir, link_base) + ".\n";

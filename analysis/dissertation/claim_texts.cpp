@@ -10,6 +10,7 @@ namespace capsule::analysis {
 
 std::vector<ClaimText> parse_claim_texts(const std::string& markdown) {
   static const char* const fields[] = {"Section: ", "Statement: ", "Tested by: ", "Criterion: "};
+  static const char* const k_reread = "Re-read: ";  // optional, after the criterion
   std::vector<ClaimText> out;
   std::set<std::string> keys;
   std::istringstream in(markdown);
@@ -21,7 +22,7 @@ std::vector<ClaimText> parse_claim_texts(const std::string& markdown) {
     if (line.rfind("## ", 0) == 0) {
       if (next_field != 4) throw std::runtime_error(where() + "the claim before lacks its " + fields[next_field] + "line");
       if (!keys.insert(line.substr(3)).second) throw std::runtime_error(where() + "the key '" + line.substr(3) + "' is given twice");
-      out.push_back({line.substr(3), "", "", "", ""});
+      out.push_back({line.substr(3), "", "", "", "", ""});
       next_field = 0;
     } else if (out.empty() || line.empty()) {
       continue;  // the title and introduction, and blank lines
@@ -29,8 +30,10 @@ std::vector<ClaimText> parse_claim_texts(const std::string& markdown) {
       std::string* slots[] = {&out.back().section, &out.back().statement, &out.back().tested_by, &out.back().criterion};
       *slots[next_field] = line.substr(std::string(fields[next_field]).size());
       ++next_field;
+    } else if (next_field == 4 && line.rfind(k_reread, 0) == 0 && out.back().reread.empty()) {
+      out.back().reread = line.substr(std::string(k_reread).size());
     } else {
-      throw std::runtime_error(where() + "expected " + (next_field < 4 ? std::string("the ") + fields[next_field] + "line" : "a blank line or a '## ' heading") +
+      throw std::runtime_error(where() + "expected " + (next_field < 4 ? std::string("the ") + fields[next_field] + "line" : "a blank line, one 'Re-read: ' line or a '## ' heading") +
                                " of '" + out.back().key + "'");
     }
   }

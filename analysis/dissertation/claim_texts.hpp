@@ -14,10 +14,11 @@ struct ClaimText {
   std::string statement;  // what the text says
   std::string tested_by;  // the campaign (and case) that tests it, the campaign first
   std::string criterion;  // the rule, in numbers
+  std::string reread;     // optional: the sentence a rule was re-read from, and what changed
 };
 
 // The claims of a claims.md text: each "## " heading a key, followed by the lines "Section: ",
-// "Statement: ", "Tested by: " and "Criterion: " in that order. Throws std::runtime_error naming
+// "Statement: ", "Tested by: " and "Criterion: " in that order, then optionally one "Re-read: " line. Throws std::runtime_error naming
 // the line when a line is missing, out of order or unknown, or a key is given twice.
 std::vector<ClaimText> parse_claim_texts(const std::string& markdown);
 

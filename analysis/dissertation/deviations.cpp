@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "analysis/dissertation/document_links.hpp"
+#include "analysis/dissertation/measured_numbers.hpp"
 #include "deviations_text.hpp"
 
 namespace capsule::analysis {
@@ -51,6 +52,10 @@ std::string known_deviations_markdown() {
     s += "- <a id=\"" + cause_anchor(i + 1) + "\"></a>**" + cause_label(i + 1) + " " + all[i].topic + ".** " + all[i].text +
          " *Moves:* " + all[i].affects + ".\n";
   return s;
+}
+
+std::string known_deviations_markdown(const DissertationResults& results) {
+  return fill_measured_numbers(known_deviations_markdown(), results, false);
 }
 
 std::vector<std::size_t> causes_of_claim(const std::string& claim_key) {

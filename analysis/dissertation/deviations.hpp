@@ -26,6 +26,10 @@ std::vector<KnownDeviation> parse_known_deviations(const std::string& markdown);
 // The list as a Markdown section body: one bullet per deviation, headed by its label and anchor
 // (cause_label, cause_anchor: C1 the first of deviations.md).
 std::string known_deviations_markdown();
+// The same with the measured numbers deviations.md quotes as placeholders filled from the shipped
+// results (measured_numbers.hpp); one without its source there reads "[not measured: why]".
+class DissertationResults;
+std::string known_deviations_markdown(const DissertationResults& results);
 
 // The numbers (1 for the first of deviations.md) of the causes whose Claims: line names
 // `claim_key`, in the order of deviations.md.

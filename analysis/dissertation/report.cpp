@@ -1,5 +1,7 @@
 #include "analysis/dissertation/report.hpp"
 
+#include "analysis/dissertation/prose_lines.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -64,12 +66,18 @@ std::string dissertation_markdown(const DissertationResults& results, const std:
       if (!c.measured) ++s.coefficients_unknown;
       else if (c.overlap) ++s.coefficients_overlap;
       else ++s.coefficients_disjoint;
-      if (const auto widened = overlap_with_resolution_error(row, c))
-        ++(*widened ? s.coefficients_overlap_with_resolution : s.coefficients_disjoint_with_resolution);
+      if (const auto x = extrapolated_difference_test(row, c)) {
+        ++(x->passes ? s.coefficients_extrapolated_pass : s.coefficients_extrapolated_fail);
+        if (x->moves != 0) ++(x->moves > 0 ? s.coefficients_toward : s.coefficients_away);
+      }
     }
   }
-  const auto claims = evaluate_claims(results);
+  const auto claims = evaluate_claims_at_two_levels(results);
   for (const auto& c : claims) {
+    ++(c.levels == Levels::converged       ? s.rows_converged
+       : c.levels == Levels::not_converged ? s.rows_not_converged
+       : c.levels == Levels::one_level     ? s.rows_one_level
+                                           : s.rows_not_judged);
     if (c.verdict == Verdict::agrees) ++s.agrees;
     else if (c.verdict == Verdict::differs) ++s.differs;
     else ++s.cannot_tell;
@@ -81,6 +89,8 @@ std::string dissertation_markdown(const DissertationResults& results, const std:
        : v == ClaimVerdict::in_part ? s.claims_in_part
                                     : s.claims_cannot_tell);
   s.linked_figures = linked_figure_count(figure_index(), results.results_dir());
+  for (const auto& [key, t] : claim_text_passes(claims))
+    ++(t == TextPasses::yes ? s.text_passes : t == TextPasses::no ? s.text_fails : s.text_no_numbers);
 
   std::string md;
   md += "# The dissertation beside this toolkit\n\n";
@@ -91,9 +101,26 @@ std::string dissertation_markdown(const DissertationResults& results, const std:
   md += "## Claims by chapter\n\n";
   md += "One row per claim (two where the text makes it for the circle and the sphere): the claim links to its "
         "detail section (full criterion, numbers, members, figures); a cell cut short ends in \"…\". *agrees*: the "
-        "criterion holds; *differs*: it does not; *cannot tell*: what it needs is missing. cause: the "
+        "criterion holds; *differs*: it does not; *cannot tell*: what it needs is missing. text passes: the same "
+        "rule run on the text's own numbers (its Table 2, the numbers in its sentences): *yes*, *no*, or *no numbers* "
+        "where the text prints none the rule can run on (its figures are not digitised). cause: the "
         "[known causes](#known-causes) that move the claim.\n\n";
   md += chapter_tables_markdown(claims);
+  md += "### Words used here\n\n"
+        "- **campaign**: a set of simulations run together for one figure or table of the text (`campaigns/dissertation/<name>.json`); "
+        "its results are in `<name>/report/`.\n"
+        "- **member**: one simulation of a campaign, one physical point at one resolution; its file `member.h5` records the "
+        "D_xy, theta, tension and shear-rate series over time and the markers D_max, D_stop, t_stop.\n"
+        "- **ladder**, **level**: the same physical point run at several resolutions (`resolution.a`: lattice units per capsule "
+        "radius, 5 and 7; `resolution.mesh_level`: the 3D mesh's refinement); the finest level is the largest a.\n"
+        "- **converged**, **not converged**, **one level**: the verdict at the two finest levels of the ladder is the same; "
+        "differs between them (the claim cannot tell); the campaign ships one level only.\n"
+        "- **text passes**: the claim's rule run on the text's own printed numbers (Table 2, numbers in its sentences).\n"
+        "- **k tau_s**, **k tau_r**: response and recovery times (85), (86) in shear-rate units; **k tau_R1**, **k tau_R2**: "
+        "the fast and slow recovery times of (88)-(90); **w_R1**: the share of the recovery carried by the fast phase when "
+        "the two amplitudes of (90) are fitted freely (**free amplitudes**; (90) fixes it at 1/2).\n"
+        "- **C1 ... C" + std::to_string(known_deviations().size()) + "**: the known causes of disagreement (below); a claim that differs with no cause linked is "
+        "*unexplained*.\n\n";
   md += "## Figures\n\n";
   md += "The dissertation's figures that a shipped campaign's report regenerates with the same axes and quantities "
         "(" + std::to_string(s.linked_figures) + " toolkit figures linked; the table is "
@@ -103,23 +130,30 @@ std::string dissertation_markdown(const DissertationResults& results, const std:
   md += "## Summary\n\n";
   md += "Generated from the shipped campaign results (`<campaign>/report/fits.json` and the member files it names). "
         "A campaign not yet run, or a member whose fit or file is missing, gives *cannot tell* with what is missing, "
-        "never a guess. In a campaign with a resolution ladder the claims judge each physical point at its finest "
-        "shipped level (the last column of \"Campaigns read\"), as Table 2 takes the finest level of its bilinear "
-        "ladder.\n\n";
+        "never a guess. In a campaign with a resolution ladder every claim is judged twice: each physical point (and "
+        "each bilinear fit) at its finest shipped level (the last column of \"Campaigns read\"), and at the next coarser "
+        "level where the point has one; a verdict stands only where both give it (*converged*), otherwise the claim "
+        "cannot tell (*not converged*, both levels' numbers given). A campaign shipped at one level says so (*one level*).\n\n";
   md += "- Claims: " + std::to_string(s.claims_agree) + " agree, " + std::to_string(s.claims_differ) + " differ, " +
         std::to_string(s.claims_in_part) + " hold in part, " + std::to_string(s.claims_cannot_tell) + " cannot tell (of " +
         std::to_string(verdicts.size()) + " claims; in part: the rows of one claim, such as its circle and its sphere, "
         "disagree, or some cannot tell).\n";
   md += "- Rows of the claims table: " + std::to_string(s.agrees) + " agree, " + std::to_string(s.differs) + " differ, " +
         std::to_string(s.cannot_tell) + " cannot tell (of " + std::to_string(claims.size()) + ").\n";
+  md += "- Convergence of the rows: " + std::to_string(s.rows_converged) + " converged (the same verdict at the two finest "
+        "levels), " + std::to_string(s.rows_not_converged) + " not converged (cannot tell), " + std::to_string(s.rows_one_level) +
+        " on campaigns shipped at one level, " + std::to_string(s.rows_not_judged) + " not judged at the finest level.\n";
+  md += "- The text passes its own rule: " + std::to_string(s.text_passes) + " yes, " + std::to_string(s.text_fails) +
+        " no, " + std::to_string(s.text_no_numbers) + " no numbers (of " + std::to_string(verdicts.size()) + " claims).\n";
   md += "- Table 2 coefficients, statistical 95 % intervals only: " + std::to_string(s.coefficients_overlap) +
         " overlap, " + std::to_string(s.coefficients_disjoint) + " do not, " + std::to_string(s.coefficients_unknown) +
         " cannot tell (of 18).\n";
-  md += "- Table 2 coefficients with the ladder's resolution error added to the toolkit's interval: " +
-        std::to_string(s.coefficients_overlap_with_resolution) + " overlap, " +
-        std::to_string(s.coefficients_disjoint_with_resolution) + " do not (of the " +
-        std::to_string(s.coefficients_overlap_with_resolution + s.coefficients_disjoint_with_resolution) +
-        " whose campaign gives a ladder error).\n\n";
+  md += "- Table 2 coefficients Richardson-extrapolated over the ladder against the text's: " +
+        std::to_string(s.coefficients_extrapolated_pass) + " pass the difference test (|extrapolated - text| <= 1.96 "
+        "combined sigma), " + std::to_string(s.coefficients_extrapolated_fail) + " do not (of the " +
+        std::to_string(s.coefficients_extrapolated_pass + s.coefficients_extrapolated_fail) + " with an extrapolation); from the "
+        "next coarser level to the finest " + std::to_string(s.coefficients_toward) + " move toward the text, " +
+        std::to_string(s.coefficients_away) + " away.\n\n";
   md += campaign_table(results).to_markdown() + "\n";
   // One section: its title, what it shows, and its table.
   const auto section = [&md](const std::string& title, const std::string& intro, const Table& table) {
@@ -136,7 +170,10 @@ std::string dissertation_markdown(const DissertationResults& results, const std:
   section("Table 2 (Sec. 5.1.1)",
           "Each row of the dissertation's Table 2 beside the bilinear fit (95)-(96) of the campaign that regenerates "
           "it; overlap: the two 95 % intervals share a point. The text gives R^2 > 0.99 for every k tau_r fit and "
-          "about 0.91 / 0.96 / 0.95 for k tau_s.",
+          "about 0.91 / 0.96 / 0.95 for k tau_s. The last three columns: the coefficient at the ladder's next coarser "
+          "level (and whether the finest moved toward the text from it), the coefficient Richardson-extrapolated to "
+          "zero spacing with its error estimate, and the difference test |extrapolated - text| <= 1.96 sigma, sigma^2 "
+          "= (text half-width / 1.96)^2 + (fit half-width / 1.96)^2 + Richardson error^2.",
           table2_side_by_side(rows));
   section("Ratios b/a (Sec. 5.1.1)",
           "The text quotes b_s/a_s ~ 2.8, 3.5, 3.5 and b_r/a_r ~ 5, 4.6, 4.1. \"From Table 2\": b/a of the printed "
@@ -152,9 +189,9 @@ std::string dissertation_markdown(const DissertationResults& results, const std:
   md += "<a id=\"known-causes\"></a>\n\n## Known causes of disagreement\n\n";
   md += "Where the toolkit departs from the text on purpose, or measures what the text does not control. Before "
         "reading a *differs* as an error of either, check whether one of these moves it.\n\n";
-  md += known_deviations_markdown();
+  md += known_deviations_markdown(results);
   if (summary) *summary = s;
-  return md;
+  return wrap_prose_lines(md);
 }
 
 DissertationSummary write_dissertation(const std::string& results_dir, const std::string& out_file) {

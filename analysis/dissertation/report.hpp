@@ -22,9 +22,13 @@ struct DissertationSummary {
   int agrees = 0, differs = 0, cannot_tell = 0;     // claim rows (a claim of both the circle and the sphere: two)
   int claims_agree = 0, claims_differ = 0, claims_in_part = 0, claims_cannot_tell = 0;  // claims (claim_verdicts)
   int coefficients_overlap = 0, coefficients_disjoint = 0, coefficients_unknown = 0;  // Table 2's 18
-  // with the ladder's resolution error added to the toolkit's interval (coefficients that have one)
-  int coefficients_overlap_with_resolution = 0, coefficients_disjoint_with_resolution = 0;
+  // Richardson-extrapolated over the ladder (coefficients that have one): the difference test against
+  // the text's, and whether the finest level moved toward the text from the next coarser
+  int coefficients_extrapolated_pass = 0, coefficients_extrapolated_fail = 0;
+  int coefficients_toward = 0, coefficients_away = 0;
   int linked_figures = 0;  // the toolkit's figures THESIS.md links (figure_index.hpp), all shipped
+  int rows_converged = 0, rows_not_converged = 0, rows_one_level = 0, rows_not_judged = 0;  // claim rows (Levels)
+  int text_passes = 0, text_fails = 0, text_no_numbers = 0;  // claims whose rule the text's own numbers pass (claim_text_passes)
 };
 
 // The document; `results_label` is how it names the results folder (as given on the command line),

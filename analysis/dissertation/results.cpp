@@ -52,7 +52,7 @@ std::string DissertationCampaign::judged_levels() const {
   return out;
 }
 
-void mark_coarse_members(DissertationCampaign& c) {
+void mark_coarse_members(DissertationCampaign& c, int level) {
   for (auto& m : c.members) m.coarse = false, m.finer.clear();
   for (const auto& [key, spacing] : c.ladder_keys) {
     // A physical point: the case and every recorded parameter but the ladder keys.
@@ -64,24 +64,51 @@ void mark_coarse_members(DissertationCampaign& c) {
         if (!c.ladder_keys.count(k)) s << '|' << k << '=' << v;
       return s.str();
     };
-    std::map<std::string, const DissertationMember*> finest;  // point -> its finest member
-    for (const auto& m : c.members) {
-      const auto it = m.parameters.find(key);
-      if (it == m.parameters.end() || std::isnan(ladder_spacing(spacing, it->second))) continue;
-      const DissertationMember*& f = finest[point(m)];
-      if (!f || ladder_spacing(spacing, it->second) < ladder_spacing(spacing, f->parameters.at(key))) f = &m;
-    }
+    const auto spacing_of = [&](const DissertationMember* m) { return ladder_spacing(spacing, m->parameters.at(key)); };
+    std::map<std::string, std::vector<DissertationMember*>> levels;  // point -> its members with the key
     for (auto& m : c.members) {
       const auto it = m.parameters.find(key);
-      if (it == m.parameters.end()) continue;
-      const auto f = finest.find(point(m));
-      if (f == finest.end() || f->second == &m) continue;
-      if (ladder_spacing(spacing, f->second->parameters.at(key)) < ladder_spacing(spacing, it->second)) {
-        m.coarse = true;
-        m.finer = f->second->slug;
+      if (it == m.parameters.end() || std::isnan(ladder_spacing(spacing, it->second))) continue;
+      levels[point(m)].push_back(&m);
+    }
+    for (auto& [p, ms] : levels) {
+      std::stable_sort(ms.begin(), ms.end(), [&](auto* a, auto* b) { return spacing_of(a) < spacing_of(b); });
+      // The distinct levels, finest first; the judged member is the first at the level asked for.
+      std::vector<double> distinct;
+      for (auto* m : ms)
+        if (distinct.empty() || spacing_of(m) > distinct.back()) distinct.push_back(spacing_of(m));
+      if (distinct.size() > 1) c.several_levels = true;
+      const double judged_spacing = distinct[std::min<std::size_t>(static_cast<std::size_t>(std::max(level, 0)), distinct.size() - 1)];
+      const DissertationMember* judged = nullptr;
+      for (auto* m : ms)
+        if (spacing_of(m) == judged_spacing) {
+          judged = m;
+          break;
+        }
+      for (auto* m : ms) {
+        if (spacing_of(m) == judged_spacing) continue;
+        m->coarse = true;
+        if (spacing_of(m) > judged_spacing) m->finer = judged->slug;
       }
     }
   }
+}
+
+void judge_bilinear_at_level(DissertationCampaign& c, int level) {
+  if (!c.fits.contains("bilinear") || !c.fits["bilinear"].is_array()) return;
+  std::map<std::pair<std::string, std::string>, int> count;  // (case, target) -> fits
+  for (const auto& e : c.fits["bilinear"]) ++count[{e.value("case", ""), e.value("target", "")}];
+  for (const auto& [k, n] : count)
+    if (n > 1) c.several_levels = true;
+  if (level < 1) return;
+  nlohmann::json kept = nlohmann::json::array();
+  std::set<std::pair<std::string, std::string>> dropped;
+  for (const auto& e : c.fits["bilinear"]) {
+    const std::pair<std::string, std::string> k{e.value("case", ""), e.value("target", "")};
+    if (count[k] > 1 && dropped.insert(k).second) continue;  // the finest, listed first
+    kept.push_back(e);
+  }
+  c.fits["bilinear"] = kept;
 }
 
 std::string resolve_member_file(const std::string& campaign_root, const std::string& recorded) {
@@ -96,9 +123,16 @@ std::string resolve_member_file(const std::string& campaign_root, const std::str
   return fs::exists(moved) ? moved.string() : "";
 }
 
-DissertationResults::DissertationResults(std::string results_dir) : dir_(std::move(results_dir)) {}
+DissertationResults::DissertationResults(std::string results_dir, int level) : dir_(std::move(results_dir)), level_(level) {}
+
+std::set<std::string> DissertationResults::take_campaigns_read() const {
+  std::set<std::string> out;
+  out.swap(read_);
+  return out;
+}
 
 const DissertationCampaign& DissertationResults::campaign(const std::string& name) const {
+  read_.insert(name);
   if (const auto it = campaigns_.find(name); it != campaigns_.end()) return it->second;
   DissertationCampaign c;
   c.name = name;
@@ -140,7 +174,8 @@ const DissertationCampaign& DissertationResults::campaign(const std::string& nam
     m.file = resolve_member_file(root.string(), m.recorded_path);
     c.members.push_back(std::move(m));
   }
-  mark_coarse_members(c);
+  mark_coarse_members(c, level_);
+  judge_bilinear_at_level(c, level_);
   return campaigns_.emplace(name, std::move(c)).first->second;
 }
 

@@ -4,6 +4,7 @@
 // fits.json, or a member whose file is gone, is recorded with why, never skipped silently.
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,8 @@ struct DissertationCampaign {
   // The campaign's resolution ladder keys (analysis ladder[].key, bilinear.ladder) with
   // their spacing ("1/x", "2^-x", "x"), read from fits.json's analysis block.
   std::map<std::string, std::string> ladder_keys;
+  // Some physical point (or bilinear fit) of the campaign is shipped at two levels or more of a ladder.
+  bool several_levels = false;
 
   // Members of one case ("" = every case), each slug once (a member shared by several
   // cases is listed in fits.json once per case), without the coarse members of a ladder.
@@ -49,10 +52,15 @@ struct DissertationCampaign {
 
 class DissertationResults {
  public:
-  explicit DissertationResults(std::string results_dir);
+  // level 0: each physical point judged at its finest shipped level of a ladder (and each bilinear
+  // fit at its finest); level 1: at the next coarser level where the point has one, else its only.
+  explicit DissertationResults(std::string results_dir, int level = 0);
   const std::string& results_dir() const { return dir_; }
+  int level() const { return level_; }
   // Loaded on first use and kept. Throws std::runtime_error for a fits.json that is not valid JSON.
   const DissertationCampaign& campaign(const std::string& name) const;
+  // The campaigns asked for since the last call (the claims record which campaigns each rule read).
+  std::set<std::string> take_campaigns_read() const;
   // The member file's contents; nullopt with `why` set when missing, unreadable or not
   // complete. With accept_unstable, a member that ended unstable is returned too (its rows
   // up to the blow-up are results: the text's own 3D recoveries end in instability).
@@ -61,7 +69,9 @@ class DissertationResults {
 
  private:
   std::string dir_;
+  int level_ = 0;
   mutable std::map<std::string, DissertationCampaign> campaigns_;
+  mutable std::set<std::string> read_;
 };
 
 // Where a member file recorded as `recorded` lives for a campaign whose results folder
@@ -74,6 +84,13 @@ std::string resolve_member_file(const std::string& campaign_root, const std::str
 // case and the same recorded parameters apart from the ladder keys) at a coarser level of a
 // key than another member of that point. A member whose fits.json entry lacks the key's
 // value is never coarse.
-void mark_coarse_members(DissertationCampaign& c);
+// With level 1 the member judged is each point's next coarser level (its only one where it has one)
+// and every other member of the point is coarse; `finer` names the judged member for the levels
+// coarser than it. Sets c.several_levels when some point has two levels or more.
+void mark_coarse_members(DissertationCampaign& c, int level = 0);
+
+// Level 1: drops each (case, target)'s first, finest, bilinear fit from c.fits where a coarser one
+// follows it, so that the claims read the next coarser level's fit; sets c.several_levels then.
+void judge_bilinear_at_level(DissertationCampaign& c, int level);
 
 }  // namespace capsule::analysis

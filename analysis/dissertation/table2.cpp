@@ -114,19 +114,31 @@ std::string text_r2(const Table2RowComparison& row) {
 }
 }  // namespace
 
-std::optional<bool> overlap_with_resolution_error(const Table2RowComparison& row, const CoefficientComparison& c) {
+std::optional<ExtrapolatedComparison> extrapolated_difference_test(const Table2RowComparison& row, const CoefficientComparison& c) {
+  if (!row.found || !c.measured) return std::nullopt;
+  const auto x = row.entry.ladder_extrapolated.find(c.name);
   const auto e = row.entry.ladder_error.find(c.name);
-  if (!row.found || !c.measured || e == row.entry.ladder_error.end()) return std::nullopt;
-  const double w = c.half_width + std::abs(e->second);
-  return intervals_overlap(c.value - w, c.value + w, c.reference - c.reference_half_width,
-                           c.reference + c.reference_half_width);
+  if (x == row.entry.ladder_extrapolated.end() || e == row.entry.ladder_error.end() || !std::isfinite(x->second) ||
+      !std::isfinite(e->second))
+    return std::nullopt;
+  ExtrapolatedComparison out;
+  out.extrapolated = x->second;
+  out.error = std::abs(e->second);
+  out.difference = out.extrapolated - c.reference;
+  const double z = 1.96;
+  out.sigma = std::sqrt(std::pow(c.reference_half_width / z, 2) + std::pow(c.half_width / z, 2) + out.error * out.error);
+  out.passes = std::abs(out.difference) <= z * out.sigma;
+  if (const auto coarse = row.entry.ladder_coarser.find(c.name); coarse != row.entry.ladder_coarser.end() && std::isfinite(coarse->second))
+    out.moves = std::abs(c.value - c.reference) < std::abs(coarse->second - c.reference) ? 1 : -1;
+  return out;
 }
 
 Table table2_side_by_side(const std::vector<Table2RowComparison>& rows) {
   Table t;
   t.title = "Table 2 (Sec. 5.1.1): k tau = a eta + b V + c, dissertation against this toolkit (± = 95 % half-width)";
   t.header = {"row", "campaign", "coefficient", "dissertation", "toolkit", "difference", "95 % overlap",
-              "R^2 dissertation", "R^2 toolkit", "N", "resolution error (ladder)", "overlap with it"};
+              "R^2 dissertation", "R^2 toolkit", "N", "next coarser level", "extrapolated ± Richardson error",
+              "difference test"};
   for (const auto& row : rows) {
     const Table2Row& ref = *row.reference;
     const std::string campaign = row.ensemble ? row.ensemble->campaign : "";
@@ -135,7 +147,7 @@ Table table2_side_by_side(const std::vector<Table2RowComparison>& rows) {
       const char* names[] = {"a", "b", "c"};
       for (int i = 0; i < 3; ++i)
         t.rows.push_back({row_label(ref), campaign, names[i], plus_minus(refs[i].first, refs[i].second),
-                          "cannot tell (" + row.why + ")", "", "", i == 0 ? text_r2(row) : "", "", "", "", ""});
+                          "cannot tell (" + row.why + ")", "", "", i == 0 ? text_r2(row) : "", "", "", "", "", ""});
       continue;
     }
     std::string where = campaign;
@@ -150,15 +162,23 @@ Table table2_side_by_side(const std::vector<Table2RowComparison>& rows) {
       cells.push_back(i == 0 ? text_r2(row) : "");
       cells.push_back(i == 0 && row.entry.fit.ok ? short_number(row.entry.fit.r_squared) : "");
       cells.push_back(i == 0 && row.entry.fit.ok ? std::to_string(row.entry.fit.n_points) : "");
-      // the campaign's own discretisation error of this coefficient (bilinear.ladder), else blank
-      std::string resolution_error;
-      if (const auto e = row.entry.ladder_error.find(c.name); e != row.entry.ladder_error.end())
-        resolution_error = "± " + short_number(e->second);
-      else if (const auto n = row.entry.ladder_note.find(c.name); n != row.entry.ladder_note.end())
-        resolution_error = "n/a: " + n->second;
-      cells.push_back(resolution_error);
-      const auto widened = overlap_with_resolution_error(row, c);
-      cells.push_back(widened ? (*widened ? "yes" : "NO") : "");
+      // the coefficient at the next coarser level, whether the finest moved toward the text, and the
+      // extrapolation's difference test (bilinear.ladder), else blank or why not
+      const auto x = extrapolated_difference_test(row, c);
+      const auto coarse = row.entry.ladder_coarser.find(c.name);
+      cells.push_back(coarse == row.entry.ladder_coarser.end() || !c.measured
+                          ? ""
+                          : short_number(coarse->second) + (x && x->moves > 0 ? " (finest: toward the text)"
+                                                            : x && x->moves < 0 ? " (finest: away from the text)" : ""));
+      if (x) {
+        cells.push_back(short_plus_minus(x->extrapolated, x->error));
+        cells.push_back(std::string(x->passes ? "yes" : "NO") + ": |" + short_number(x->difference) + "| vs 1.96 x " +
+                        short_number(x->sigma));
+      } else {
+        const auto n = row.entry.ladder_note.find(c.name);
+        cells.push_back(n != row.entry.ladder_note.end() && c.measured ? "n/a: " + n->second : "");
+        cells.push_back("");
+      }
       t.rows.push_back(cells);
     }
   }

@@ -50,10 +50,17 @@ RatioInterval ratio_b_over_a_interval(const FitResult& bilinear);
 // hw = |b/a| sqrt((hw_a/a)^2 + (hw_b/b)^2). Used for the text's Table 2.
 RatioInterval ratio_from_half_widths(double a, double a_hw, double b, double b_hw);
 
-// Whether the toolkit's 95 % interval widened by the ladder's resolution error of the
-// coefficient (bilinear.ladder) overlaps the text's interval; nullopt when the fit failed or the
-// campaign has no ladder error for it.
-std::optional<bool> overlap_with_resolution_error(const Table2RowComparison& row, const CoefficientComparison& c);
+// A coefficient Richardson-extrapolated over the campaign's ladder (bilinear.ladder) against the
+// text's: the difference test |extrapolated - text| <= 1.96 sigma, sigma^2 = (text half-width / 1.96)^2
+// + (fit half-width / 1.96)^2 + error^2 (the Richardson error taken as one standard error), and
+// whether the coefficient moved toward the text from the next coarser level to the finest.
+struct ExtrapolatedComparison {
+  double extrapolated = 0.0, error = 0.0, difference = 0.0, sigma = 0.0;
+  bool passes = false;
+  int moves = 0;  // +1 toward the text, -1 away, 0 unknown (no coarser level)
+};
+// nullopt when the fit failed or the campaign has no extrapolation of the coefficient.
+std::optional<ExtrapolatedComparison> extrapolated_difference_test(const Table2RowComparison& row, const CoefficientComparison& c);
 
 Table table2_side_by_side(const std::vector<Table2RowComparison>& rows);
 Table table2_ratios(const std::vector<Table2RowComparison>& rows);

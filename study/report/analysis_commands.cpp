@@ -155,8 +155,8 @@ int write_dissertation_comparison(const fs::path& results_dir, const fs::path& o
   out << "wrote " << s.file << "\nclaims: " << s.claims_agree << " agree, " << s.claims_differ << " differ, "
       << s.claims_in_part << " hold in part, " << s.claims_cannot_tell << " cannot tell (rows: " << s.agrees << " / "
       << s.differs << " / " << s.cannot_tell << ")\nTable 2 coefficients: " << s.coefficients_overlap << " overlap, " << s.coefficients_disjoint
-      << " do not, " << s.coefficients_unknown << " cannot tell (statistical intervals); with the ladder's resolution error: "
-      << s.coefficients_overlap_with_resolution << " overlap, " << s.coefficients_disjoint_with_resolution << " do not\n";
+      << " do not, " << s.coefficients_unknown << " cannot tell (statistical intervals); extrapolated over the ladder: "
+      << s.coefficients_extrapolated_pass << " pass the difference test, " << s.coefficients_extrapolated_fail << " do not\n";
   return 0;
 }
 

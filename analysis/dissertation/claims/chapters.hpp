@@ -10,6 +10,7 @@ namespace capsule::analysis::claims {
 
 ClaimResult claim_2_mesh(const DissertationResults& res);
 ClaimResult claim_2_G(const DissertationResults& res);
+ClaimResult claim_2_fig7(const DissertationResults& res);
 ClaimResult claim_3_1(const DissertationResults& res);
 ClaimResult claim_3_1_overshoot(const DissertationResults& res);
 ClaimResult claim_3_2_proportional(const DissertationResults& res, const std::string& case_name);
@@ -17,6 +18,9 @@ ClaimResult claim_3_2_constant(const DissertationResults& res, const std::string
 ClaimResult claim_3_2_modest(const DissertationResults& res, const std::string& case_name);
 ClaimResult claim_3_2_response_normalized(const DissertationResults& res, const std::string& case_name);
 ClaimResult claim_3_2_cleaner(const DissertationResults& res);
+ClaimResult claim_3_2_response_slows(const DissertationResults& res, const std::string& case_name);
+ClaimResult claim_3_3_deformation(const DissertationResults& res, const std::string& case_name);
+ClaimResult claim_3_4_deformation(const DissertationResults& res, const std::string& case_name);
 ClaimResult claim_3_2_small_Ca(const DissertationResults& res);
 ClaimResult claim_3_3_no_bending(const DissertationResults& res, const std::string& case_name);
 ClaimResult claim_3_3_stiff(const DissertationResults& res, const std::string& case_name);
@@ -27,6 +31,7 @@ ClaimResult claim_3_4_linear(const DissertationResults& res, const std::string& 
 ClaimResult claim_3_4_small_V(const DissertationResults& res, const std::string& case_name);
 ClaimResult claim_3_5_2d(const DissertationResults& res);
 ClaimResult claim_3_5_3d(const DissertationResults& res);
+ClaimResult claim_3_5_small_eta(const DissertationResults& res);
 ClaimResult claim_3_5_fig20(const DissertationResults& res);
 ClaimResult claim_orders(const DissertationResults& res, const std::string& key, const std::string& fit, int o1, int o2,
                          const Skip& skip);
@@ -39,6 +44,9 @@ ClaimResult claim_4_1_2_Ca(const DissertationResults& res);
 ClaimResult claim_4_1_2_E_b_V(const DissertationResults& res);
 ClaimResult claim_4_1_2_eta(const DissertationResults& res);
 ClaimResult claim_4_1_1_no_bending(const DissertationResults& res);
+ClaimResult claim_4_1_1_dip_rise(const DissertationResults& res);
+ClaimResult claim_4_1_1_worst_fits(const DissertationResults& res);
+ClaimResult claim_4_1_2_direction(const DissertationResults& res);
 ClaimResult claim_4_1_2_r2(const DissertationResults& res);
 ClaimResult claim_4_1_2_fig38(const DissertationResults& res);
 ClaimResult claim_4_1_2_fig38_bending(const DissertationResults& res);
@@ -65,5 +73,7 @@ ClaimResult claim_5_2_gamma_range(const DissertationResults& res);
 ClaimResult claim_5_2_mesh(const DissertationResults& res);
 ClaimResult claim_5_2_gamma(const DissertationResults& res);
 ClaimResult claim_5_2_fig66(const DissertationResults& res);
+ClaimResult claim_5_2_settled(const DissertationResults& res);
+ClaimResult claim_5_2_2_initial(const DissertationResults& res);
 
 }  // namespace capsule::analysis::claims

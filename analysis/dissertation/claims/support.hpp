@@ -95,6 +95,7 @@ inline ClaimResult claim(const std::string& key, const Fills& fills = {}) {
   r.statement = fill_placeholders(t.statement, fills, key);
   r.campaign = fill_placeholders(t.tested_by, fills, key);
   r.criterion = fill_placeholders(t.criterion, fills, key);
+  r.reread = fill_placeholders(t.reread, fills, key);
   return r;
 }
 
@@ -144,6 +145,12 @@ inline bool have_points(ClaimResult& r, const Series& s, std::size_t n, const st
 inline void set(ClaimResult& r, bool ok, const std::string& measured) {
   r.verdict = ok ? Verdict::agrees : Verdict::differs;
   r.measured = measured;
+}
+
+// The claim's rule run on the text's own numbers (`numbers` names them and what the rule gives).
+inline void set_text(ClaimResult& r, bool passes, const std::string& numbers) {
+  r.text_passes = passes ? TextPasses::yes : TextPasses::no;
+  r.text_numbers = numbers;
 }
 
 // Cannot tell for one of several parts: appends its reason and returns false.

@@ -26,7 +26,7 @@ std::vector<std::string> headings_of_claims_md() {
 
 TEST_CASE("every claim in claims.md has a section, a statement, what tests it and a criterion", "[analysis][dissertation]") {
   const auto keys = headings_of_claims_md();
-  REQUIRE(keys.size() == 58);  // the rules of claims/chapter*.cpp: a new claim updates this count
+  REQUIRE(keys.size() == 68);  // the rules of claims/chapter*.cpp: a new claim updates this count
   for (const auto& key : keys) {
     INFO(key);
     const ClaimText& t = claim_text(key);  // the embedded copy is the file's
@@ -51,6 +51,13 @@ TEST_CASE("a claims text with a line missing, out of order or given twice is ref
   CHECK_THROWS_WITH(parse_claim_texts("## A\nSection: 1\nStatement: s\n\n## B\n"), Catch::Contains("line 5") && Catch::Contains("lacks"));
   CHECK_THROWS_WITH(parse_claim_texts(one + one), Catch::Contains("given twice"));
   CHECK_THROWS_WITH(parse_claim_texts(one + "stray\n"), Catch::Contains("line 7"));
+  // One optional "Re-read: " line after the criterion, never two.
+  const auto reread = parse_claim_texts(one + "Re-read: \"the sentence\"; the rule was x, now y\n");
+  REQUIRE(reread.size() == 1);
+  CHECK(reread[0].reread == "\"the sentence\"; the rule was x, now y");
+  CHECK(parsed[0].reread.empty());
+  CHECK_THROWS_WITH(parse_claim_texts(one + "Re-read: a\nRe-read: b\n"), Catch::Contains("line 8"));
+  CHECK_THROWS_WITH(parse_claim_texts("## A\nSection: 1\nRe-read: a\n"), Catch::Contains("Statement: "));
 }
 
 TEST_CASE("claim placeholders are filled, and a missing value is an error naming it", "[analysis][dissertation]") {

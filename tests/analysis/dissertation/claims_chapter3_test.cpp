@@ -146,12 +146,12 @@ TEST_CASE("Chapter 3 claims: the E_b = 0 capsule still recovers, judged from its
 
 TEST_CASE("Chapter 3 claims: D_max ~ D_stop often, not at large V", "[analysis][dissertation]") {
   TempDir tmp("dissertation_claims_overshoot");
-  // Five members at V = 1 and one at V = 5 in ch3_v; the other three campaigns present, empty.
-  const auto write = [&](double near_overshoot_of_one, double far_overshoot) {
+  // Five members at V = 1 and one at V = 5 (two with second_far_overshoot) in ch3_v; the other three campaigns present, empty.
+  const auto write = [&](double near_overshoot_of_one, double far_overshoot, double second_far_overshoot = -1.0) {
     nlohmann::json members = nlohmann::json::array();
-    for (int i = 0; i < 6; ++i) {
+    for (int i = 0; i < (second_far_overshoot >= 0.0 ? 7 : 6); ++i) {
       const double V = i < 5 ? 1.0 : 5.0;
-      const double overshoot = i == 0 ? near_overshoot_of_one : (i == 5 ? far_overshoot : 0.0);
+      const double overshoot = i == 0 ? near_overshoot_of_one : (i == 5 ? far_overshoot : i == 6 ? second_far_overshoot : 0.0);
       const std::string slug = "3d-" + std::to_string(i), rel = "members/" + slug + "/member.h5";
       write_marked_member(tmp.path / "ch3_v" / rel, 0.3 * (1 + overshoot), 0.3, 0.0);
       members.push_back(member_json(slug, "3d", {{"Ca", 0.05}, {"E_b", 0.025}, {"V", V}, {"eta", 0.0}}, {}, rel));
@@ -167,6 +167,13 @@ TEST_CASE("Chapter 3 claims: D_max ~ D_stop often, not at large V", "[analysis][
     CHECK(c.measured.find("5 members with V <= 1 and eta <= 1, 1 with D_max more than 2 % above D_stop") != std::string::npos);
   }
   SECTION("no overshoot at large V differs") { CHECK(write(0.0, 0.01).verdict == Verdict::differs); }
+  SECTION("one large-V member overshooting while another has D_max ~ D_stop differs: the text names no exception") {
+    const auto c = write(0.0, 0.2, 0.004);
+    INFO(c.measured);
+    CHECK(c.verdict == Verdict::differs);
+    CHECK(c.measured.find("2 with V >= 5 or eta >= 5, 1 of them with D_max within 2 % of D_stop (ch3_v/3d-6 0.4 %)") !=
+          std::string::npos);
+  }
   SECTION("a campaign not run cannot tell") {
     write(0.0, 0.2);
     std::filesystem::remove_all(tmp.path / "ch3_eta");
@@ -230,9 +237,76 @@ TEST_CASE("Chapter 3 claims: the sphere's times against eta like those against V
     CHECK(c.verdict == Verdict::agrees);
     CHECK(c.measured.find("eta: slopes k tau_s 0.017, k tau_r 0.027, k tau_r above k tau_s at every eta") != std::string::npos);
   }
+  SECTION("recovery rising 3.5 times as fast as response over eta, 1.75 times over V: not alike, differs") {
+    write_fits(tmp.path, "ch3_eta", sweep("3d", "eta", eta, [](double e) { return 0.3 + 0.017 * e; }, [](double e) { return 0.58 + 0.0595 * e; }));
+    const auto c = judge();
+    INFO(c.measured);
+    CHECK(c.verdict == Verdict::differs);
+    CHECK(c.measured.find("slope of k tau_r / slope of k tau_s: 1.75 over V, 3.5 over eta (factor 2)") != std::string::npos);
+  }
   SECTION("k tau_r less steep than k tau_s in eta differs") {
     write_fits(tmp.path, "ch3_eta", sweep("3d", "eta", eta, [](double e) { return 0.3 + 0.017 * e; }, [](double e) { return 0.58 + 0.01 * e; }));
     CHECK(judge().verdict == Verdict::differs);
   }
   SECTION("no eta sweep cannot tell") { CHECK(judge().verdict == Verdict::cannot_tell); }
+}
+
+TEST_CASE("Chapter 3 claims: k tau_s's growth slows as Ca rises; D_xy at the stop falls with E_b and with V", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_trends");
+  const auto judge = [&](const std::string& section, const std::string& words) {
+    return find_claim(evaluate_claims(DissertationResults(tmp.path.string())), section, words);
+  };
+  SECTION("a concave k tau_s agrees, a straight line differs") {
+    write_fits(tmp.path, "ch3_ca", sweep("2d", "Ca", k_ca, [](double c) { return std::sqrt(c); }, [](double c) { return 10 * c; }));
+    const auto c = judge("3.2", "rate of increase declining as Ca rises (2d)");
+    INFO(c.measured);
+    CHECK(c.verdict == Verdict::agrees);
+    CHECK(c.measured.rfind("slope of k tau_s between successive Ca: 3.7, 2.62, 1.85", 0) == 0);
+    write_fits(tmp.path, "ch3_ca", sweep("2d", "Ca", k_ca, [](double c) { return 0.1 + 2 * c; }, [](double c) { return 10 * c; }));
+    CHECK(judge("3.2", "rate of increase declining as Ca rises (2d)").verdict == Verdict::differs);
+  }
+  // Three ch3_eb (ch3_v) members of case 3d with the given D_xy at the stop.
+  const auto write = [&](const std::string& campaign, const std::string& x, const std::vector<double>& D) {
+    nlohmann::json members = nlohmann::json::array();
+    const std::vector<double> xs{0.0125, 0.05, 0.1};
+    for (std::size_t i = 0; i < D.size(); ++i) {
+      const std::string slug = "3d-" + std::to_string(i), rel = "members/" + slug + "/member.h5";
+      write_marked_member(tmp.path / campaign / rel, D[i], D[i], 0.0);
+      std::map<std::string, double> p{{"Ca", 0.05}, {"E_b", 0.025}, {"V", 1.0}, {"eta", 0.0}};
+      p[x] = xs[i];
+      members.push_back(member_json(slug, "3d", p, {}, rel));
+    }
+    write_fits(tmp.path, campaign, members);
+  };
+  SECTION("D_xy falling with E_b agrees; one step up differs; too few members cannot tell") {
+    write("ch3_eb", "E_b", {0.3, 0.25, 0.2});
+    const auto c = judge("3.3", "decreases the extent of the deformation (3d)");
+    INFO(c.measured);
+    CHECK(c.verdict == Verdict::agrees);
+    CHECK(c.measured.find("falls at every step (first / last 1.5); D_xy at the stop: E_b 0.0125: 0.3") == 0);
+    write("ch3_eb", "E_b", {0.3, 0.31, 0.2});
+    CHECK(judge("3.3", "decreases the extent of the deformation (3d)").verdict == Verdict::differs);
+    write("ch3_eb", "E_b", {0.3, 0.25});
+    CHECK(judge("3.3", "decreases the extent of the deformation (3d)").verdict == Verdict::cannot_tell);
+  }
+  SECTION("D_xy falling with V agrees") {
+    write("ch3_v", "V", {0.4, 0.3, 0.2});
+    CHECK(judge("3.4", "much larger than with a larger V (3d)").verdict == Verdict::agrees);
+  }
+}
+
+TEST_CASE("Chapter 3 claims: circle and sphere already differ for eta <= 4", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_small_eta");
+  const std::vector<double> eta{0.5, 1.0, 2.0, 5.0};
+  const auto judge = [&](double slope_3d) {
+    write_fits(tmp.path, "ch3_eta",
+               both(sweep("2d", "eta", eta, [](double e) { return 0.4 + 0.002 * e; }, [](double e) { return 0.85 + 0.005 * e; }),
+                    sweep("3d", "eta", eta, [=](double e) { return 0.3 + slope_3d * e; }, [=](double e) { return 0.5 + slope_3d * e; })));
+    return find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "3.5", "even for eta <= 4");
+  };
+  const auto c = judge(0.02);
+  INFO(c.measured);
+  CHECK(c.verdict == Verdict::agrees);  // k tau_s: 2d 0.75 %, 3d 9.52 %
+  CHECK(c.measured.find("k_tau_s rise over eta <= 4: 2d 0.748 %") != std::string::npos);
+  CHECK(judge(0.002).verdict == Verdict::differs);
 }

@@ -139,3 +139,16 @@ TEST_CASE("Chapter 4 claims: tumbling times against Ca, E_b, V and eta", "[analy
     CHECK(find_claim(judge(tmp), "4.1.2", "E_b and V hardly move").verdict == Verdict::cannot_tell);
   }
 }
+
+TEST_CASE("Chapter 4 claims: the poorest (87) fits at the smallest Ca", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_worst_fits");
+  const auto judge = [&](const Curve& fit_r2) {
+    write_fits(tmp.path, "ch4_2d_tt", sweep(false, "Ca", {0.04, 0.067, 0.1}, [](double) { return 0.5; }, [](double) { return 20.0; }, fit_r2));
+    return find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "4.1.1", "poorest two-phase fits");
+  };
+  const ClaimResult small = judge([](double c) { return c < 0.05 ? 0.93 : 0.99; });
+  INFO(small.measured);
+  CHECK(small.verdict == Verdict::agrees);
+  CHECK(small.measured.rfind("R^2 of (87) lowest at Ca 0.04; R^2: Ca 0.04: 0.93", 0) == 0);
+  CHECK(judge([](double c) { return c > 0.09 ? 0.9 : 0.99; }).verdict == Verdict::differs);
+}

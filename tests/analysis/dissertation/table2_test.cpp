@@ -1,5 +1,7 @@
 // THESIS.md's Table 2 section: synthetic fits.json files with known bilinear coefficients
 // give the right differences, overlaps, ratios and "cannot tell" for a campaign not run.
+#include <cmath>
+
 #include <catch2/catch.hpp>
 
 #include "analysis/fit/fit_statistics.hpp"
@@ -37,13 +39,22 @@ TEST_CASE("Dissertation Table 2: known coefficients give the right differences a
   CHECK(rs.coefficients[1].overlap);
   CHECK(rs.coefficients[2].difference == Approx(0.1));
   CHECK(rs.coefficients[2].overlap);        // [0.4658, 0.5658] against [0.352, 0.4796]: share [0.4658, 0.4796]
-  // With a ladder's resolution error the toolkit's interval widens by it: a = 0.0408 ± (0.002 + e).
+  // The coefficient extrapolated over a ladder against the text's: |x - 0.0208| <= 1.96 sigma,
+  // sigma^2 = (0.0039/1.96)^2 + (0.002/1.96)^2 + e^2.
   Table2RowComparison laddered = rs;
-  CHECK_FALSE(overlap_with_resolution_error(laddered, laddered.coefficients[0]).has_value());  // no ladder error
-  laddered.entry.ladder_error["a"] = 0.017;  // [0.0218, 0.0598] against [0.0169, 0.0247]: overlap
-  CHECK(overlap_with_resolution_error(laddered, laddered.coefficients[0]) == std::optional<bool>(true));
-  laddered.entry.ladder_error["a"] = 0.01;   // [0.0288, 0.0528]: none
-  CHECK(overlap_with_resolution_error(laddered, laddered.coefficients[0]) == std::optional<bool>(false));
+  CHECK_FALSE(extrapolated_difference_test(laddered, laddered.coefficients[0]).has_value());  // no extrapolation
+  laddered.entry.ladder_extrapolated["a"] = 0.03, laddered.entry.ladder_error["a"] = 0.005;
+  laddered.entry.ladder_coarser["a"] = 0.045;  // 0.045 -> 0.0408: toward the text's 0.0208
+  auto x = extrapolated_difference_test(laddered, laddered.coefficients[0]);
+  REQUIRE(x.has_value());
+  CHECK(x->difference == Approx(0.0092));
+  CHECK(x->sigma == Approx(std::sqrt(std::pow(0.0039 / 1.96, 2) + std::pow(0.002 / 1.96, 2) + 0.005 * 0.005)));
+  CHECK(x->passes);  // 0.0092 <= 1.96 x 0.00548
+  CHECK(x->moves == 1);
+  laddered.entry.ladder_error["a"] = 0.001, laddered.entry.ladder_coarser["a"] = 0.035;  // 0.035 -> 0.0408: away
+  x = extrapolated_difference_test(laddered, laddered.coefficients[0]);
+  CHECK_FALSE(x->passes);  // 0.0092 > 1.96 x 0.00245
+  CHECK(x->moves == -1);
 
   const auto& rr = rows[1];  // k_tau_r, Ca 0.05, E_b 0
   REQUIRE(rr.found);
