@@ -1,5 +1,6 @@
 #pragma once
 // From dimensionless groups to lattice units (dx = dt = rho = 1), CONTRACTS.md.
+#include "solver/membrane3d/constitutive_law.hpp"
 #include "solver/scene/scene.hpp"
 
 namespace capsule {
@@ -36,6 +37,9 @@ Units units_for(const Scene& scene, double tau);
 // "Conventions", measured). Skalak: (60)-(61) as printed, G_s = E_s (Skalak et al., Yazdani and
 // Bagchi).
 double shear_modulus_3d(const Scene& scene, const Units& units);
+
+// The 3D membrane's law of a 3D scene's law; std::invalid_argument for the 2D law hooke.
+membrane3d::ElasticLaw elastic_law_3d(MembraneLaw law);
 
 // The Maxwell element of a 3D membrane in lattice units: the standard linear solid (63)-(67)
 // when eta > 0, or the power law in the membrane (power_law.model "membrane"; the scene refuses
