@@ -4,11 +4,10 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "solver/app/bench_command.hpp"
 #include "solver/app/cli_support.hpp"
 #include "solver/app/reference_bim_command.hpp"
 #include "solver/app/rigid_sphere_command.hpp"
-#include "solver/lbm/bench.hpp"
-#include "solver/run/bench_member3d.hpp"
 #include "solver/scene/memory_estimate.hpp"
 #include "solver/run/run_member.hpp"
 #include "solver/scene/scene.hpp"
@@ -21,69 +20,51 @@ const char* const exit_codes =
     "Exit status: 0 complete (check: the scene is valid), 1 the solver failed or a file could not be\n"
     "written, 2 bad scene, output path or command line (nothing was run), 3 the member ended unstable,\n"
     "4 stopped by SIGTERM, SIGINT or SIGUSR1 after writing a restart point (the same command continues).";
+
+// `capsule check SCENE`: the canonical scene on stdout (study hashes it), the memory it needs on stderr.
+int check_command(int argc, const char* const* argv) {
+  CLI::App app{"capsule check: validate a scene and print it with every default filled in"};
+  app.footer(exit_codes);
+  std::string scene;
+  app.add_option("scene", scene, "scene JSON file")->required();
+  if (const int code = capsule::cli::parse_or_exit_code(app, argc, argv); code >= 0) return code;
+  try {
+    auto s = capsule::Scene::load(scene);
+    if (const std::string refusal = capsule::memory_refusal(s); !refusal.empty()) {
+      std::cerr << "capsule: " << scene << ": " << refusal << "\n";
+      return 2;
+    }
+    std::cout << s.to_json().dump(2) << "\n";
+    std::cerr << "capsule: " << capsule::describe_memory(capsule::estimate_memory(s)) << "; this machine has "
+              << capsule::format_bytes(capsule::physical_memory_bytes()) << "\n";
+    return 0;
+  } catch (const std::exception& e) {
+    std::cerr << "capsule: " << e.what() << "\n";
+    return 2;
+  }
+}
+
+// `capsule version`: what a member file of this binary records (study run checks it before each member).
+int version_command(int argc, const char* const* argv) {
+  CLI::App app{"capsule version: the code version and physics version this binary records in a member file, as JSON"};
+  app.footer("Exit status: 0 printed, 2 bad command line.");
+  if (const int code = capsule::cli::parse_or_exit_code(app, argc, argv); code >= 0) return code;
+  std::cout << nlohmann::json{{"code_version", capsule::build::code_version},
+                              {"physics_version", capsule::physics_version}}.dump() << "\n";
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   // `capsule SCENE -o OUT` is the common form; subcommands `check`, `bench` and
   // `reference-bim`, `rigid-sphere` and `rigid-circle` sit beside it.
-  if (argc >= 2 && std::string(argv[1]) == "check") {
-    CLI::App app{"capsule check: validate a scene and print it with every default filled in"};
-    app.footer(exit_codes);
-    std::string scene;
-    app.add_option("scene", scene, "scene JSON file")->required();
-    if (const int code = capsule::cli::parse_or_exit_code(app, argc - 1, argv + 1); code >= 0) return code;
-    try {
-      auto s = capsule::Scene::load(scene);
-      // The canonical scene on stdout (study hashes it); the memory it needs on stderr.
-      if (const std::string refusal = capsule::memory_refusal(s); !refusal.empty()) {
-        std::cerr << "capsule: " << scene << ": " << refusal << "\n";
-        return 2;
-      }
-      std::cout << s.to_json().dump(2) << "\n";
-      std::cerr << "capsule: " << capsule::describe_memory(capsule::estimate_memory(s)) << "; this machine has "
-                << capsule::format_bytes(capsule::physical_memory_bytes()) << "\n";
-      return 0;
-    } catch (const std::exception& e) {
-      std::cerr << "capsule: " << e.what() << "\n";
-      return 2;
-    }
-  }
-  if (argc >= 2 && std::string(argv[1]) == "version") {
-    // What a member file of this binary records (study run checks it before each member).
-    CLI::App app{"capsule version: the code version and physics version this binary records in a member file, as JSON"};
-    app.footer("Exit status: 0 printed, 2 bad command line.");
-    if (const int code = capsule::cli::parse_or_exit_code(app, argc - 1, argv + 1); code >= 0) return code;
-    std::cout << nlohmann::json{{"code_version", capsule::build::code_version},
-                                {"physics_version", capsule::physics_version}}.dump() << "\n";
-    return 0;
-  }
+  if (argc >= 2 && std::string(argv[1]) == "check") return check_command(argc - 1, argv + 1);
+  if (argc >= 2 && std::string(argv[1]) == "version") return version_command(argc - 1, argv + 1);
   if (argc >= 2 && std::string(argv[1]) == "reference-bim") return capsule::cli::reference_bim_command(argc - 1, argv + 1);
   if (argc >= 2 && std::string(argv[1]) == "rigid-sphere") return capsule::cli::rigid_sphere_command(argc - 1, argv + 1);
   if (argc >= 2 && std::string(argv[1]) == "rigid-circle") return capsule::cli::rigid_circle_command(argc - 1, argv + 1);
-  if (argc >= 2 && std::string(argv[1]) == "bench") {
-    CLI::App app{"capsule bench: performance benchmarks"};
-    app.footer("Exit status: 0 done, 1 failure, 2 bad command line.");
-    std::string what;
-    bool quick = false;
-    int threads = 0;
-    app.add_option("what", what, "what to benchmark: lbm (the fluid kernels), member3d (a step of the default 3D member, by part)")
-        ->required()
-        ->check(CLI::IsMember({"lbm", "member3d"}));
-    app.add_flag("--quick", quick, "fewer steps per measurement");
-    app.add_option("--threads", threads, "largest thread count to try (0 = all cores)")
-        ->check(capsule::cli::whole_number_at_least(0));
-    int a = 10, mesh_level = 4;
-    app.add_option("--a", a, "member3d: capsule radius in lattice nodes")->capture_default_str()->check(CLI::Range(3, 40));
-    app.add_option("--mesh-level", mesh_level, "member3d: icosphere level of the membrane")
-        ->capture_default_str()
-        ->check(CLI::Range(0, 6));
-    if (const int code = capsule::cli::parse_or_exit_code(app, argc - 1, argv + 1); code >= 0) return code;
-    if (what != "member3d" && (app.count("--a") > 0 || app.count("--mesh-level") > 0)) {
-      std::cerr << "capsule bench: --a and --mesh-level apply to member3d only\n";
-      return 2;
-    }
-    return what == "member3d" ? capsule::bench_member3d(quick, threads, a, mesh_level) : capsule::lbm::bench_lbm(quick, threads);
-  }
+  if (argc >= 2 && std::string(argv[1]) == "bench") return capsule::cli::bench_command(argc - 1, argv + 1);
   CLI::App app{"capsule: one capsule in shear flow (IB + MRT lattice Boltzmann + membrane FEM)\n"
                "  capsule SCENE.json -o MEMBER.h5   run one scene\n"
                "  capsule check SCENE.json          validate a scene\n"
