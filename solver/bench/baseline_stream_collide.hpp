@@ -52,11 +52,7 @@ template <class L, bool per_node, bool bottom_wall, bool top_wall>
   RowAccess<L, double, double> r;
   point_two_lattice_row<L, double, double, PaddedRows, bottom_wall, top_wall>(r, a.f, a.f_next, a.rows,
                                                                               a.rows.per_population(), y, z, a.ny, a.nz);
-  point_row_fields(r, a.force, a.velocity, a.density, per_node ? a.shear_rate : nullptr, a.n,
-                   std::size_t(a.nx) * (std::size_t(y) + std::size_t(a.ny) * std::size_t(z)));
-  r.uniform_shear_rate = a.uniform_shear_rate;
-  r.u_bottom = a.u_bottom;
-  r.u_top = a.u_top;
+  point_row_fields<per_node>(r, a, y, z);
   const int nx = a.nx;
 #pragma omp simd
   for (int x = 0; x < nx; ++x)

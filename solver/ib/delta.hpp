@@ -45,6 +45,12 @@ constexpr const auto& name_table(Delta) { return delta_names; }
 // Support width in nodes along one axis.
 constexpr int delta_width(Delta d) { return d == Delta::roma3 ? 3 : d == Delta::linear2 ? 2 : 4; }
 
+// The largest stiffness number M = E_m (1 - exp(-1/tau_m)) tau_m / nu of a membrane's Maxwell
+// element, coupled explicitly through this delta, that stays stable at rest (a long recovery
+// grows a slow mode above it): 0.4 with peskin4, 0.15 measured with roma3 and taken for the
+// deltas not measured (docs/findings/accuracy_and_stability.md "A slow instability at rest").
+constexpr double maxwell_stiffness_bound(Delta d) { return d == Delta::peskin4 ? 0.4 : 0.15; }
+
 // Lattice nodes one marker touches in dim dimensions: delta_width^dim.
 constexpr int delta_support_nodes(Delta d, int dim) {
   int nodes = 1;

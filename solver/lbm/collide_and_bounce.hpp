@@ -117,17 +117,20 @@ template <class L, class T, class A, bool bottom_wall, bool top_wall>
   });
 }
 
-// The row's fields: force, velocity and density at the row's first node (unpadded, n nodes).
-template <class L, class T, class A>
-[[gnu::always_inline]] inline void point_row_fields(RowAccess<L, T, A>& r, const double* force, double* velocity,
-                                                    double* density, const double* shear_rate, std::size_t n,
-                                                    std::size_t base) {
+// The row (y, z)'s fields from a pass's fields (force, velocity and density unpadded, n nodes;
+// the per-node s_nu where per_node; the uniform s_nu and the wall velocities).
+template <bool per_node, class L, class T, class A, class Fields>
+[[gnu::always_inline]] inline void point_row_fields(RowAccess<L, T, A>& r, const Fields& a, int y, int z) {
+  const std::size_t base = std::size_t(a.nx) * (std::size_t(y) + std::size_t(a.ny) * std::size_t(z));
   for (int d = 0; d < 3; ++d) {
-    r.force[d] = force + std::size_t(d) * n + base;
-    r.velocity[d] = velocity + std::size_t(d) * n + base;
+    r.force[d] = a.force + std::size_t(d) * a.n + base;
+    r.velocity[d] = a.velocity + std::size_t(d) * a.n + base;
   }
-  r.density = density + base;
-  r.shear_rate = shear_rate ? shear_rate + base : nullptr;
+  r.density = a.density + base;
+  r.shear_rate = per_node ? a.shear_rate + base : nullptr;
+  r.uniform_shear_rate = A(a.uniform_shear_rate);
+  r.u_bottom = A(a.u_bottom);
+  r.u_top = A(a.u_top);
 }
 
 }  // namespace capsule::lbm

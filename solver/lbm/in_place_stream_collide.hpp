@@ -69,11 +69,7 @@ template <class L, class T, class A, bool per_node, bool trt, bool macro, bool b
       else r.out[j] = row_start(j, y + cy, z + cz) + cx;
     }
   });
-  point_row_fields(r, a.force, a.velocity, a.density, per_node ? a.shear_rate : nullptr, a.n,
-                   std::size_t(a.nx) * (std::size_t(y) + std::size_t(a.ny) * std::size_t(z)));
-  r.uniform_shear_rate = A(a.uniform_shear_rate);
-  r.u_bottom = A(a.u_bottom);
-  r.u_top = A(a.u_top);
+  point_row_fields<per_node>(r, a, y, z);
   const int nx = a.nx;
 #pragma omp simd
   for (int x = 0; x < nx; ++x)

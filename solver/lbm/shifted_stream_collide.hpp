@@ -53,11 +53,7 @@ template <class L, class T, class A, bool per_node, bool trt, bool macro, bool b
   RowAccess<L, T, A> r;
   point_two_lattice_row<L, T, A, PaddedRows, bottom_wall, top_wall>(r, a.g, a.g_next, a.rows, a.rows.per_population(), y,
                                                                       z, a.ny, a.nz);
-  point_row_fields(r, a.force, a.velocity, a.density, per_node ? a.shear_rate : nullptr, a.n,
-                   std::size_t(a.nx) * (std::size_t(y) + std::size_t(a.ny) * std::size_t(z)));
-  r.uniform_shear_rate = A(a.uniform_shear_rate);
-  r.u_bottom = A(a.u_bottom);
-  r.u_top = A(a.u_top);
+  point_row_fields<per_node>(r, a, y, z);
   const int nx = a.nx;
   // The whole row in one vector loop: x - 1 = -1 and x + 1 = nx land in the ghost slots.
 #pragma omp simd

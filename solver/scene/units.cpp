@@ -123,7 +123,7 @@ double maxwell_stiffness_number(const Scene& s, double tau) {
   return m.E_m * m.tau_m * (1.0 - std::exp(-1.0 / m.tau_m)) / u.nu;
 }
 
-double maxwell_stiffness_bound(const Scene& s) { return s.delta == ib::Delta::peskin4 ? 0.4 : 0.15; }
+double maxwell_stiffness_bound(const Scene& s) { return ib::maxwell_stiffness_bound(s.delta); }
 
 double dimensionless_E_b(const Scene& s) {
   // The text's 2D reading (Scene::E_b_2d): E_B = E_b a_text E_s with a_text = 0.5 in its units

@@ -63,9 +63,8 @@ MaxwellElement3d maxwell_element_3d(const Scene& scene, const Units& units);
 // 0 without a Maxwell element.
 double maxwell_stiffness_number(const Scene& scene, double tau);
 
-// The largest maxwell_stiffness_number the relaxation-time rule allows with the scene's kernel:
-// 0.4 with Peskin's, 0.15 with the others (a slow instability at rest above about 0.2 with
-// Roma's; docs/guide/model.md "Relaxation time").
+// The largest maxwell_stiffness_number the relaxation-time rule allows with the scene's delta
+// (ib::maxwell_stiffness_bound; docs/guide/model.md "Relaxation time").
 double maxwell_stiffness_bound(const Scene& scene);
 
 // The relaxation time the solver runs a scene with: the scene's tau, or when it is 0 the

@@ -320,7 +320,7 @@ TEST_CASE("narrow kernels roma3 and linear2: closed forms, unity, zero first mom
   }
 }
 
-TEST_CASE("a delta's name, width and support are asked of it", "[ib]") {
+TEST_CASE("a delta's name, width, support and stiffness bound are asked of it", "[ib]") {
   using capsule::choice_from_name;
   using capsule::choice_name;
   for (const auto& [delta, name] : delta_names) {
@@ -336,6 +336,8 @@ TEST_CASE("a delta's name, width and support are asked of it", "[ib]") {
   CHECK(delta_support_nodes(Delta::linear2, 3) == 8);
   CHECK(delta_support_nodes(Delta::roma3, 3) == 27);
   CHECK(delta_support_nodes(Delta::peskin4, 2) == 16);
+  CHECK(maxwell_stiffness_bound(Delta::peskin4) == 0.4);
+  CHECK(maxwell_stiffness_bound(Delta::roma3) == 0.15);
 }
 
 TEST_CASE("keys4: closed form, unity, zero first and second moments", "[ib]") {
