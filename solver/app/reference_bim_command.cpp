@@ -5,6 +5,7 @@
 #include <iostream>
 #include <memory>
 
+#include "solver/app/choice_option.hpp"
 #include "solver/app/cli_support.hpp"
 #include "solver/boundary_integral/reference_run.hpp"
 
@@ -20,7 +21,7 @@ Command add_reference_bim_command(CLI::App& capsule) {
              "Exit status: 0 done, 1 the run failed (unstable or a file could not be written), 2 bad command line.");
   auto& c = o.capsule;
   app.add_option("--ca", c.Ca, "capillary number mu k a / E_s (34)")->required()->check(CLI::Range(1e-5, 10.0));
-  app.add_option("--law", c.law, "membrane law")->capture_default_str()->check(CLI::IsMember({"neo-hookean", "skalak"}));
+  add_choice_option(app, "--law", c.law, "membrane law");
   app.add_option("--C", c.C, "Skalak area-dilation constant")->capture_default_str()->check(CLI::PositiveNumber);
   app.add_option("--eb", c.E_b, "bending modulus E_B / (a^2 E_s)")->capture_default_str()->check(CLI::Range(0.0, 10.0));
   app.add_option("--level", c.level, "icosphere level (2: 162, 3: 642, 4: 2562, 5: 10242 vertices)")

@@ -11,6 +11,7 @@
 #include <memory>
 #include <sstream>
 
+#include "solver/app/choice_option.hpp"
 #include "solver/app/cli_support.hpp"
 #include "solver/rigid_sphere/rigid_circle.hpp"
 #include "solver/rigid_sphere/rigid_shell.hpp"
@@ -73,9 +74,8 @@ Command add_rigid_sphere_command(CLI::App& capsule) {
   app.add_option("--kt", o.kt, "run until this kt")->capture_default_str()->check(CLI::Range(0.01, 100.0));
   app.add_option("--gain", o.gain, "tether gain: force per unit lag of a marker behind its anchor")
       ->capture_default_str()->check(CLI::Range(1e-5, 1.0));
-  app.add_option("--kernel", o.kernel, "IB kernel")->capture_default_str()
-      ->check(CLI::IsMember({"peskin4", "roma3", "linear2", "cosine", "keys4"}));
-  app.add_option("--precision", o.precision, "fluid populations")->capture_default_str()->check(CLI::IsMember({"single", "double"}));
+  add_choice_option(app, "--kernel", o.delta, "IB delta");
+  add_choice_option(app, "--precision", o.precision, "fluid populations");
   app.add_option("--every", o.every, "series interval in kt")->capture_default_str()->check(CLI::Range(1e-3, 100.0));
   app.add_option("-o,--series", series, "CSV file for the series (kt, torque, stresslet, leakage, lag)");
   return {&app, [settings] {
@@ -92,7 +92,7 @@ Command add_rigid_sphere_command(CLI::App& capsule) {
       std::ostringstream values;
       values.precision(7);
       values << o.a << "," << (o.marker_radius > 0 ? o.marker_radius : o.a) << "," << o.level << "," << r.grid[0] << ","
-             << r.grid[1] << "," << r.grid[2] << "," << o.spin << "," << o.kernel << "," << o.precision;
+             << r.grid[1] << "," << r.grid[2] << "," << o.spin << "," << choice_name(o.delta) << "," << choice_name(o.precision);
       write_result(r, series, "a,marker_radius,level,nx,ny,nz,spin,kernel,precision", values.str());
       return 0;
     } catch (const std::exception& e) {
@@ -129,9 +129,8 @@ Command add_rigid_circle_command(CLI::App& capsule) {
   app.add_option("--kt", o.kt, "run until this kt")->capture_default_str()->check(CLI::Range(0.01, 100.0));
   app.add_option("--gain", o.gain, "tether gain: force per unit lag of a marker behind its anchor")
       ->capture_default_str()->check(CLI::Range(1e-5, 1.0));
-  app.add_option("--kernel", o.kernel, "IB kernel")->capture_default_str()
-      ->check(CLI::IsMember({"peskin4", "roma3", "linear2", "cosine", "keys4"}));
-  app.add_option("--precision", o.precision, "fluid populations")->capture_default_str()->check(CLI::IsMember({"single", "double"}));
+  add_choice_option(app, "--kernel", o.delta, "IB delta");
+  add_choice_option(app, "--precision", o.precision, "fluid populations");
   app.add_option("--every", o.every, "series interval in kt")->capture_default_str()->check(CLI::Range(1e-3, 100.0));
   app.add_option("-o,--series", series, "CSV file for the series (kt, torque, stresslet, leakage, lag)");
   return {&app, [settings] {
@@ -148,7 +147,7 @@ Command add_rigid_circle_command(CLI::App& capsule) {
       std::ostringstream values;
       values.precision(7);
       values << o.a << "," << (o.marker_radius > 0 ? o.marker_radius : o.a) << "," << o.segments << "," << r.grid[0] << ","
-             << r.grid[1] << "," << o.spin << "," << o.kernel << "," << o.precision;
+             << r.grid[1] << "," << o.spin << "," << choice_name(o.delta) << "," << choice_name(o.precision);
       write_result(r, series, "a,marker_radius,segments,nx,ny,spin,kernel,precision", values.str());
       return 0;
     } catch (const std::exception& e) {

@@ -74,7 +74,7 @@ void run_reference(const ReferenceRunOptions& o, std::ostream& summary) {
     if (s.D > peak.D) peak = s;
   char row[512];
   std::snprintf(row, sizeof row, "%d,%d,%.6g,%s,%.6g,%.6g,%ld,%.6g,%s,%.6f,%.6f,%.4g,%.5f,%.3e,%.6f,%.3e,%.3e,%.1f",
-                o.capsule.level, capsule.mesh().vertex_count(), o.capsule.Ca, o.capsule.law.c_str(), o.capsule.E_b,
+                o.capsule.level, capsule.mesh().vertex_count(), o.capsule.Ca, choice_name(o.capsule.law).c_str(), o.capsule.E_b,
                 capsule.dt(), capsule.steps(), end.kt, steady ? "yes" : "no", end.D, peak.D, peak.kt,
                 end.theta / std::numbers::pi, window_range(), end.extent_D, end.volume_change, end.area_change, wall);
   summary << reference_summary_header() << '\n' << row << '\n';

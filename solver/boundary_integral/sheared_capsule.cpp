@@ -28,8 +28,7 @@ m3::MembraneForces membrane_for(const ShearedCapsuleParameters& p, const m3::Mes
     throw std::invalid_argument("reference-bim: mesh level must be 1-6, got " + std::to_string(p.level));
   const double E_s = 1.0 / p.Ca;  // a = k = mu = 1
   m3::MembraneParameters mp;
-  const m3::ElasticLaw law = m3::elastic_law_from_name(p.law);
-  mp.law = m3::Constitutive{law, m3::law_modulus(law, E_s), p.C};
+  mp.law = m3::Constitutive{p.law, m3::law_modulus(p.law, E_s), p.C};
   mp.E_B = p.E_b * E_s;  // E_B = E_b a^2 E_s
   return m3::MembraneForces(sphere, sphere, mp);
 }
@@ -41,7 +40,7 @@ ShearedCapsule::ShearedCapsule(const ShearedCapsuleParameters& p)
       forces_(membrane_for(p, mesh_)) {
   predicted_ = mesh_;
   const double E_s = 1.0 / p.Ca, mu = p.quadrature.viscosity;
-  const double G_s = m3::law_modulus(m3::elastic_law_from_name(p.law), E_s);
+  const double G_s = m3::law_modulus(p.law, E_s);
   const double h = shortest_edge(mesh_);
   double limit = mu * h / G_s;
   if (p.E_b > 0) limit = std::min(limit, mu * h * h * h / (p.E_b * E_s));

@@ -26,7 +26,7 @@ namespace capsule::boundary_integral {
 
 struct ShearedCapsuleParameters {
   double Ca = 0.1;                   // mu k a / E_s (34)
-  std::string law = "neo-hookean";   // or "skalak"
+  membrane3d::ElasticLaw law = membrane3d::ElasticLaw::neo_hookean;
   double C = 15;                     // Skalak area-dilation constant
   double E_b = 0;                    // E_B / (a^2 E_s)
   int level = 3;                     // icosphere refinement (642 vertices at 3)

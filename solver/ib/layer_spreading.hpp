@@ -23,12 +23,12 @@ struct LayerArc {
 };
 
 // p[d] += delta(X_c - x) P_c[d] (21) for the lattice nodes x in the layers of `arc` (3D), the
-// kernel K fixed at compile time. The same walls, periodicity and products as
+// delta K fixed at compile time. The same walls, periodicity and products as
 // for_each_support_node<3> and spread<3>.
-template <Kernel K>
+template <Delta K>
 inline void spread_in_layers_of(const Grid& grid, const double* X, const double* P, std::size_t n, double* const* p,
                                 LayerArc arc) {
-  constexpr int width = kernel_width(K);
+  constexpr int width = delta_width(K);
   double* const p0 = p[0];
   double* const p1 = p[1];
   double* const p2 = p[2];
@@ -65,10 +65,10 @@ inline void spread_in_layers_of(const Grid& grid, const double* X, const double*
   }
 }
 
-// The same for a kernel named at run time.
+// The same for a delta named at run time.
 inline void spread_in_layers(const Grid& grid, const double* X, const double* P, std::size_t n, double* const* p,
-                             Kernel kernel, LayerArc arc) {
-  with_kernel(kernel, [&](auto k) { spread_in_layers_of<decltype(k)::value>(grid, X, P, n, p, arc); });
+                             Delta delta, LayerArc arc) {
+  with_delta(delta, [&](auto k) { spread_in_layers_of<decltype(k)::value>(grid, X, P, n, p, arc); });
 }
 
 }  // namespace capsule::ib

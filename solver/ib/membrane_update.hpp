@@ -13,20 +13,18 @@
 // dt = 1 lattice step, k dt = Re nu / a^2 (about 2e-4 at a = 10, tau = 1.5), so these differ by
 // O(k dt) per unit kt; tests/solver/ib/ib_test.cpp checks their order on an exact rotation.
 #include <cstddef>
-#include <stdexcept>
-#include <string>
 #include <vector>
+
+#include "solver/common/name_table.hpp"
 
 namespace capsule::ib {
 
 enum class MembraneUpdate { euler, previous_velocity, adams_bashforth2 };
 
-inline MembraneUpdate membrane_update_from_name(const std::string& name) {
-  if (name == "euler") return MembraneUpdate::euler;
-  if (name == "previous_velocity") return MembraneUpdate::previous_velocity;
-  if (name == "adams_bashforth2") return MembraneUpdate::adams_bashforth2;
-  throw std::invalid_argument("unknown membrane update \"" + name + "\"");
-}
+inline constexpr NameTable<MembraneUpdate, 3> membrane_update_names{{{MembraneUpdate::euler, "euler"},
+                                                                     {MembraneUpdate::previous_velocity, "previous_velocity"},
+                                                                     {MembraneUpdate::adams_bashforth2, "adams_bashforth2"}}};
+constexpr const auto& name_table(MembraneUpdate) { return membrane_update_names; }
 
 // The second-order Adams-Bashforth position update: X += dt ((3/2) U - (1/2) U_previous), then
 // U_previous = U. An empty U_previous (the first step, or the one after a restart point that

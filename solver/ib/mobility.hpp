@@ -7,11 +7,11 @@
 //   U = U_free + M F,   U_free,c = sum_x phi_c(x) j(x) / rho(x),
 //                       M_cd     = sum_x phi_c(x) phi_d(x) / (2 rho(x)),
 //
-// exactly (up to rounding), where phi_c(x) = delta(X_c - x) is node c's kernel weight at lattice
+// exactly (up to rounding), where phi_c(x) = delta(X_c - x) is node c's delta weight at lattice
 // node x and rho, j = sum f c are the moments of the populations before the step
 // (lbm::Fluid::moments). M acts on every Cartesian component alike (a scalar n x n matrix); it
 // is symmetric positive semi-definite and sparse: two nodes interact within the step only if
-// their kernel supports overlap. The rest of the fluid's response to F (the other half of the
+// their delta supports overlap. The rest of the fluid's response to F (the other half of the
 // momentum, streamed, and the flow it drives later) reaches the nodes through U_free of the
 // later steps. The 2D driver uses this split for its exact implicit Kelvin-Voigt step
 // (resolution.kelvin_voigt_step = "exact_mobility", solver/membrane2d/membrane.hpp).
@@ -36,8 +36,8 @@ class StepMobility2D {
  public:
   // moments(lattice_index) -> std::array<double, 4> {rho, j_x, j_y, j_z} (lbm::Fluid::moments).
   template <class Moments>
-  void assemble(const Grid& grid, const double* X, std::size_t n, Kernel kernel, Moments&& moments) {
-    if (kernel_width(kernel) != 4) throw std::invalid_argument("StepMobility2D: 4-point kernels only");
+  void assemble(const Grid& grid, const double* X, std::size_t n, Delta delta, Moments&& moments) {
+    if (delta_width(delta) != 4) throw std::invalid_argument("StepMobility2D: 4-point deltas only");
     if (grid.nx < 8) throw std::invalid_argument("StepMobility2D: needs nx >= 8 (one periodic image per pair)");
     nx_ = grid.nx, ny_ = grid.ny;
     if (xwrap_.size() != static_cast<std::size_t>(nx_ + 2 * kPad)) {
@@ -58,7 +58,7 @@ class StepMobility2D {
     U_free_.assign(2 * n, 0.0);
     for (std::size_t c = 0; c < n; ++c) {
       Stencil& s = st_[c];
-      const DeltaStencil1D sx = delta_stencil(X[2 * c], kernel), sy = delta_stencil(X[2 * c + 1], kernel);
+      const DeltaStencil1D sx = delta_stencil(X[2 * c], delta), sy = delta_stencil(X[2 * c + 1], delta);
       s.fx = wrap(sx.first, nx_), s.fy = sy.first;  // x origin in [0, nx): the tables below reach nx + 6
       for (int m = 0; m < 4; ++m) {
         s.wx[m] = sx.w[m];

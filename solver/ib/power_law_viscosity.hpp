@@ -50,8 +50,8 @@ class PowerLawViscosity {
  public:
   using Tensor = std::array<std::array<double, Dim>, Dim>;  // g[d][e] = d u_d / d x_e
 
-  PowerLawViscosity(Grid grid, Kernel kernel, PowerLawParameters p)
-      : grid_(grid), kernel_(kernel), p_(p), field_(grid.size(), 0.0), slot_(grid.size(), -1) {}
+  PowerLawViscosity(Grid grid, Delta delta, PowerLawParameters p)
+      : grid_(grid), delta_(delta), p_(p), field_(grid.size(), 0.0), slot_(grid.size(), -1) {}
 
   // (99)-(103). X, normal: n * Dim doubles; area: n doubles; u: Dim lattice velocity arrays.
   void update(const double* X, const double* normal, const double* area, std::size_t n, const double* const* u) {
@@ -61,7 +61,7 @@ class PowerLawViscosity {
     for (std::size_t node : previous_) field_[node] = 0.0, slot_[node] = -1;
     touched_.clear();
     for (std::size_t c = 0; c < n; ++c)
-      for_each_support_node<Dim>(grid_, X + Dim * c, kernel_, [&](std::size_t node, double) {
+      for_each_support_node<Dim>(grid_, X + Dim * c, delta_, [&](std::size_t node, double) {
         if (slot_[node] < 0) slot_[node] = static_cast<long>(touched_.size()), touched_.push_back(node);
       });
     // Centred-difference gradients, once per support node.
@@ -73,7 +73,7 @@ class PowerLawViscosity {
 #pragma omp parallel for schedule(static)
     for (long c = 0; c < static_cast<long>(n); ++c) {
       Tensor g{};
-      for_each_support_node<Dim>(grid_, X + Dim * c, kernel_, [&](std::size_t node, double w) {
+      for_each_support_node<Dim>(grid_, X + Dim * c, delta_, [&](std::size_t node, double w) {
         const Tensor& gn = grad_[slot_[node]];
         for (int d = 0; d < Dim; ++d)
           for (int e = 0; e < Dim; ++e) g[d][e] += w * gn[d][e];  // (99)
@@ -84,7 +84,7 @@ class PowerLawViscosity {
     // (103), serial: the supports overlap.
     for (std::size_t c = 0; c < n; ++c) {
       const double m = mu_[c] * area[c];
-      for_each_support_node<Dim>(grid_, X + Dim * c, kernel_, [&](std::size_t node, double w) { field_[node] += w * m; });
+      for_each_support_node<Dim>(grid_, X + Dim * c, delta_, [&](std::size_t node, double w) { field_[node] += w * m; });
     }
   }
 
@@ -152,7 +152,7 @@ class PowerLawViscosity {
 
  private:
   Grid grid_;
-  Kernel kernel_;
+  Delta delta_;
   PowerLawParameters p_;
   std::vector<double> gamma_, mu_;
   std::vector<double> field_;

@@ -30,9 +30,9 @@ namespace capsule::ib {
 class SpreadingBox {
  public:
   // Zeroes p[0..2] wherever the last spread may have written, then p[d] += sum_c delta(X_c - x)
-  // P_c[d] (21) (= spread<3>(grid, X, P, n, p, kernel)), and remembers the new box.
+  // P_c[d] (21) (= spread<3>(grid, X, P, n, p, delta)), and remembers the new box.
   void clear_last_and_spread(const Grid& grid, const double* X, const double* P, std::size_t n, double* const* p,
-                             Kernel kernel) {
+                             Delta delta) {
     const RowRange last = box_;
     const bool last_whole = whole_;
     whole_ = !find_box(grid, X, n);
@@ -40,15 +40,15 @@ class SpreadingBox {
     {
       const LayerArc arc = thread_arc(grid, omp_get_thread_num(), omp_get_num_threads());
       clear(grid, p, last, last_whole, arc);
-      spread_in_layers(grid, X, P, n, p, kernel, arc);
+      spread_in_layers(grid, X, P, n, p, delta, arc);
     }
   }
 
   // The two halves alone: spread (21) without clearing, and clearing without spreading.
-  void spread(const Grid& grid, const double* X, const double* P, std::size_t n, double* const* p, Kernel kernel) {
+  void spread(const Grid& grid, const double* X, const double* P, std::size_t n, double* const* p, Delta delta) {
     whole_ = !find_box(grid, X, n);
 #pragma omp parallel if (n > kThreadedFrom)
-    spread_in_layers(grid, X, P, n, p, kernel, thread_arc(grid, omp_get_thread_num(), omp_get_num_threads()));
+    spread_in_layers(grid, X, P, n, p, delta, thread_arc(grid, omp_get_thread_num(), omp_get_num_threads()));
   }
   // Zeroes p[0..2] wherever the last spread may have written; the whole field before the
   // first spread and after forget().
@@ -61,7 +61,7 @@ class SpreadingBox {
   // Threads from about a level-4 membrane (2562 nodes), as interpolate<3>; fewer nodes spread
   // in less time than a fork costs on shared cores.
   static constexpr std::size_t kThreadedFrom = 2048;
-  // Every delta kernel's stencil lies within 3 nodes of its point (support_rows.hpp): the box
+  // Every delta's stencil lies within 3 nodes of its point (support_rows.hpp): the box
   // of the nodes widened by 3 holds every node spread<3> writes. Stencils that would wrap onto
   // themselves in z (a membrane as tall as the box) leave no box: clear everything.
   static constexpr int kStencilReach = 3;

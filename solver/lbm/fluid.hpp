@@ -1,55 +1,20 @@
 #pragma once
-// The lattice Boltzmann fluid (Sec. 2.1, docs/guide/model.md "Fluid"): MRT collision (2) with the
-// body-force scheme (22)-(23), half-way bounce-back moving walls, periodic in x and z.
-//
-// Geometry and units (docs/CONTRACTS.md): dx = dt = 1, rho0 = 1.
-//  - Node (i, j, k) sits at (i + 0.5, j + 0.5, k + 0.5); index = i + nx*(j + ny*k) (x fastest).
-//  - Walls at y = 0 and y = ny (half-way between the last node row and its mirror),
-//    moving in x with u_bottom and u_top; periodic in x (and z).
-//  - nz = 1 for D2Q9. force(2) and velocity(2) exist in 2D and are ignored / zero.
-//
-// Time levels. The state holds the populations f(n) before collision. step() does,
-// in one fused pass over the nodes:
-//    rho(n), u(n) = (sum f c + F/2)/rho (22) from f(n) and the force F filled before step();
-//    collide with F (2), (22)-(23);  stream;  bounce back at the walls with the wall
-//    velocity set before step()  ->  f(n+1).
-// After step(), density() and velocity() hold rho(n) and u(n): the velocity at the
-// time level of the force used in that step (the one the IB interpolates to move
-// the membrane from X(n) to X(n+1), (19)-(20)). The populations are at level n+1.
-// Before the first step they hold the initial fields. The bounce-back of step() n
-// happens between levels n and n+1: a time-dependent wall velocity is best given at
-// t = n + 1/2 (the Stokes-second-problem test does so).
-//
-// Forcing: Peng & Luo as in the text, (22)-(23): j' = j + F/2 enters the equilibrium,
-// the momentum leaves the collision as j + F; no force terms in the other moments.
-// Measured second order (Poiseuille test). Relaxation rates: relaxation.hpp.
-//
-// Known lattice property: the staggered mode u_x ~ (-1)^(x+t) is an equilibrium after
-// every streaming and is never damped. Smooth forces (the IB cosine delta) hardly excite
-// it; a force alternating from node to node does (stop_shear_test measures ~1e-10 U).
-//
-// Kernel: the MRT of collision.hpp split as BGK at s_nu plus the few moments relaxed at other
-// rates (split_collision.hpp), on populations stored shifted by the rest equilibrium,
-// f_i - w_i, in double or float (Precision, precision.hpp), streamed in place in one array
-// (in_place_stream_collide.hpp, the AA pattern; default) or between two arrays
-// (shifted_stream_collide.hpp; kept as the reference the in-place scheme is tested against).
-//
-// Macroscopic region. By default every step writes rho(n), u(n) at every node and reads the
-// force everywhere. set_macroscopic_region(boxes) restricts both, from the next step on, to
-// the x-rows (fixed y, z) that meet the boxes: elsewhere density()/velocity() keep stale
-// values and the force is IGNORED (taken as zero). Inside, the values are bitwise those of
-// the full fields (tests/solver/lbm/macroscopic_region_test.cpp). The 3D driver sets the rows
-// around the membrane each step (IB support, gradient stencil, motion margin) and asks for
-// the full fields on the step before an output row. set_macroscopic_everywhere() undoes it.
-//
-// Viscosity: nu = (1/s_nu - 1/2)/3 (8), (13). A Fluid runs with one uniform viscosity
-// (no per-node array exists) until set_viscosity(node, nu) is called; from then on every
-// node carries its own nu, and only nodes set since the last step get their s_nu
-// recomputed. set_uniform_viscosity() returns to the uniform mode. s_nu sets the rates
-// of the stresses, e and eps, and (D2Q9) q by (9); see relaxation.hpp for why e and eps
-// follow s_nu (a fixed s_eps with s_e = s_nu is unstable for tau >~ 1.9 (2D) / 1.5 (3D)).
-// set_collision(CollisionModel::trt) switches to the two-relaxation-time rates of
-// relaxation.hpp (odd moments at Lambda = 3/16 from each node's s_nu) from the next step on.
+// The lattice Boltzmann fluid (Sec. 2.1, docs/guide/model.md "Fluid"): MRT collision (2) with
+// Peng and Luo's body force (22)-(23), half-way bounce-back moving walls at y = 0 and y = ny,
+// periodic in x and z; dx = dt = rho0 = 1, node (i, j, k) at (i, j, k) + 1/2, x fastest
+// (docs/CONTRACTS.md). nz = 1 for D2Q9.
+// Time levels: step() takes f(n) and the force F set before it, and leaves f(n+1) with
+// density() and velocity() at level n (22), the level of the force, which the immersed
+// boundary interpolates to move the membrane from X(n) to X(n+1) (19)-(20); a time-dependent
+// wall velocity is best given at t = n + 1/2.
+// The kernels: the split collision (split_collision.hpp) on populations f_i - w_i in double or
+// float (precision.hpp), streamed in place (in_place_stream_collide.hpp) or between two arrays
+// (shifted_stream_collide.hpp, the reference the in-place scheme is tested against).
+// set_macroscopic_region() restricts reading F and writing rho, u to the rows around the
+// membrane (bitwise the same populations: tests/solver/lbm/macroscopic_region_test.cpp);
+// set_viscosity() gives nodes their own nu = (1/s_nu - 1/2)/3 (8), (13); set_collision() picks
+// MRT or TRT rates (relaxation.hpp). The staggered mode u_x ~ (-1)^(x+t) is never damped; a
+// force alternating from node to node excites it (stop_shear_test: ~1e-10 U).
 #include <array>
 #include <cstddef>
 #include <functional>
@@ -104,6 +69,8 @@ class Fluid {
   struct RowBox {
     int y_begin, y_end, z_begin, z_end;
   };
+  // From the next step on, F is read and rho, u written only in the rows that meet the boxes;
+  // elsewhere the force is ignored (taken as zero) and density()/velocity() keep stale values.
   void set_macroscopic_region(const std::vector<RowBox>& boxes);
   void set_macroscopic_everywhere();
   bool macroscopic_everywhere() const { return macroscopic_rows_.empty(); }
@@ -113,8 +80,8 @@ class Fluid {
   const double* velocity(int d) const { return velocity_.data() + std::size_t(d) * n_; }
   const double* density() const { return density_.data(); }
 
-  // Switches on the per-node field on first use; marks the node if nu changed.
-  // Not thread-safe: call from one thread.
+  // Switches on the per-node field on first use; marks the node if nu changed (only marked
+  // nodes get their s_nu recomputed at the next step). Not thread-safe: call from one thread.
   void set_viscosity(std::size_t node, double nu);
   void set_uniform_viscosity(double nu);
   double viscosity(std::size_t node) const;
@@ -156,7 +123,7 @@ class Fluid {
 
  private:
   void update_marked_rates();
-  // Populations are stored with padded x-rows (PaddedRows in stream_collide.hpp).
+  // Populations are stored with padded x-rows (PaddedRows, padded_rows.hpp).
   std::size_t population_index(int i, std::size_t node) const {
     const std::size_t row = node / std::size_t(nx_), x = node % std::size_t(nx_);
     return std::size_t(i) * rows_.per_population() + rows_.index(row, x);

@@ -43,75 +43,37 @@ struct InPlaceFields {
   double u_bottom, u_top;                 // wall x-velocities
 };
 
-// One node of either step: load through in[], collide, store through out[] (the caller
-// sets the pointers and x offsets of the step).
+// One row of either step: point in[] and out[] at the step's slots (x offsets folded in),
+// then the node update shared with the two-lattice pass (collide_and_bounce.hpp).
 template <class L, class T, class A, bool per_node, bool trt, bool macro, bool bottom_wall, bool top_wall, bool odd>
 [[gnu::flatten]] CAPSULE_LBM_FAST_CLONE_ATTR void in_place_row(const InPlaceFields<T>& a, int y, int z) {
-  constexpr int Q = L::Q;
   using B = MomentBasis<L>;
-  const int nx = a.nx;
-  const std::size_t n = a.n;
   const std::size_t np = a.rows.per_population();
-  const std::size_t row = std::size_t(y) + std::size_t(a.ny) * std::size_t(z);
-  const std::size_t base = std::size_t(nx) * row;
   auto row_start = [&](int i, int yy, int zz) {
     return a.g + std::size_t(i) * np + a.rows.index(std::size_t(yy) + std::size_t(a.ny) * std::size_t((zz + a.nz) % a.nz), 0);
   };
-  // in[j] + x: where f_j(x) is read; out[j] + x: where f*_j(x) goes (x offsets folded in).
-  T* in[Q];
-  T* out[Q];
-  static_for<Q>([&](auto jj) __attribute__((always_inline)) {
+  RowAccess<L, T, A> r;
+  static_for<L::Q>([&](auto jj) __attribute__((always_inline)) {
     constexpr int j = jj;
     constexpr int o = B::opposite[j];
     constexpr int cx = L::c[j][0], cy = L::c[j][1], cz = L::c[j][2];
     if constexpr (!odd) {
-      in[j] = row_start(j, y, z);
-      out[j] = row_start(o, y, z);
+      r.in[j] = row_start(j, y, z);
+      r.out[j] = row_start(o, y, z);
     } else {
       constexpr bool arrives_from_wall = (bottom_wall && cy > 0) || (top_wall && cy < 0);  // x - c_j beyond
-      if constexpr (arrives_from_wall) in[j] = row_start(j, y, z);
-      else in[j] = row_start(o, y - cy, z - cz) - cx;
+      if constexpr (arrives_from_wall) r.in[j] = row_start(j, y, z);
+      else r.in[j] = row_start(o, y - cy, z - cz) - cx;
       constexpr bool leaves = (bottom_wall && cy < 0) || (top_wall && cy > 0);  // x + c_j beyond a wall
-      if constexpr (leaves) out[j] = row_start(o, y, z);
-      else out[j] = row_start(j, y + cy, z + cz) + cx;
+      if constexpr (leaves) r.out[j] = row_start(o, y, z);
+      else r.out[j] = row_start(j, y + cy, z + cz) + cx;
     }
   });
-  const double* force[3] = {a.force + base, a.force + n + base, a.force + 2 * n + base};
-  double* vel[3] = {a.velocity + base, a.velocity + n + base, a.velocity + 2 * n + base};
-  double* rho_out = a.density + base;
-  const double* s_node = per_node ? a.shear_rate + base : nullptr;
-  const A s_uniform = A(a.uniform_shear_rate);
-  const A u_bottom = A(a.u_bottom), u_top = A(a.u_top);
-
+  point_row_fields<per_node>(r, a, y, z);
+  const int nx = a.nx;
 #pragma omp simd
-  for (int x = 0; x < nx; ++x) {
-    A g[Q];
-    static_for<Q>([&](auto i) __attribute__((always_inline)) { g[i] = A(in[i][x]); });
-    A F[3] = {A(0), A(0), A(0)};
-    if constexpr (macro) static_for<L::D>([&](auto d) __attribute__((always_inline)) { F[d] = A(force[d][x]); });
-    A s_nu;
-    if constexpr (per_node) s_nu = A(s_node[x]);
-    else s_nu = s_uniform;
-    A rho, u[3];
-    // Always the forced collision (F = 0 where not read), as in shifted_stream_collide.hpp.
-    SplitCollision<L, A>::template collide<true, trt>(g, F, s_nu, rho, u);
-    if constexpr (macro) {
-      rho_out[x] = double(rho);
-      static_for<L::D>([&](auto d) __attribute__((always_inline)) { vel[d][x] = double(u[d]); });
-    }
-    static_for<Q>([&](auto ii) __attribute__((always_inline)) {
-      constexpr int i = ii;
-      constexpr int cx = L::c[i][0];
-      constexpr int cy = L::c[i][1];
-      if constexpr (bottom_wall && cy < 0) {
-        out[i][x] = T(g[i] - A(L::weight_numerator[i] * cx / 6.0) * rho * u_bottom);
-      } else if constexpr (top_wall && cy > 0) {
-        out[i][x] = T(g[i] - A(L::weight_numerator[i] * cx / 6.0) * rho * u_top);
-      } else {
-        out[i][x] = T(g[i]);
-      }
-    });
-  }
+  for (int x = 0; x < nx; ++x)
+    collide_and_bounce<L, T, A, SplitForcedCollision<L, A, trt>, per_node, macro, bottom_wall, top_wall>(r, x, x, x);
 }
 
 template <class L, class T, class A, bool per_node, bool trt, bool macro, bool odd>

@@ -5,19 +5,14 @@
 //    small deviations of a Stokes flow keep their digits), collided in float arithmetic
 //    (chosen by measurement: docs/findings/performance.md "Single against double"). rho, u and the force stay double arrays
 //    in both, so the immersed-boundary code is the same.
-#include <stdexcept>
-#include <string>
+#include "solver/common/name_table.hpp"
 
 namespace capsule::lbm {
 
 enum class Precision { double_precision, single_precision };
 
-inline const char* precision_name(Precision p) { return p == Precision::single_precision ? "single" : "double"; }
-
-inline Precision precision_from_name(const std::string& name) {
-  if (name == "double") return Precision::double_precision;
-  if (name == "single") return Precision::single_precision;
-  throw std::invalid_argument("precision must be \"double\" or \"single\", got \"" + name + "\"");
-}
+inline constexpr NameTable<Precision, 2> precision_names{
+    {{Precision::double_precision, "double"}, {Precision::single_precision, "single"}}};
+constexpr const auto& name_table(Precision) { return precision_names; }
 
 }  // namespace capsule::lbm

@@ -5,14 +5,6 @@
 
 namespace capsule::membrane3d {
 
-ElasticLaw elastic_law_from_name(const std::string& name) {
-  if (name == "neo-hookean") return ElasticLaw::neo_hookean;
-  if (name == "skalak") return ElasticLaw::skalak;
-  throw std::invalid_argument("unknown 3D elastic law '" + name + "' (allowed: neo-hookean, skalak)");
-}
-
-std::string elastic_law_name(ElasticLaw law) { return law == ElasticLaw::skalak ? "skalak" : "neo-hookean"; }
-
 double law_modulus(ElasticLaw law, double E_s) { return law == ElasticLaw::neo_hookean ? E_s / 3.0 : E_s; }
 
 double Constitutive::energy_density(const Mat2& Cg) const {

@@ -3,16 +3,19 @@
 // Cauchy-Green tensor C = F^T F of the in-plane deformation (2x2, reference frame) so that
 // no eigen-decomposition is needed: lambda_1^2 + lambda_2^2 = tr C, lambda_1^2 lambda_2^2 = det C.
 #include <Eigen/Core>
-#include <string>
 #include <utility>
+
+#include "solver/common/name_table.hpp"
 
 namespace capsule::membrane3d {
 
 using Mat2 = Eigen::Matrix2d;
 
 enum class ElasticLaw { neo_hookean, skalak };
-ElasticLaw elastic_law_from_name(const std::string& name);  // "neo-hookean" | "skalak"
-std::string elastic_law_name(ElasticLaw law);
+// The names of the scene's key `law` (3D) and of `capsule reference-bim --law`.
+inline constexpr NameTable<ElasticLaw, 2> elastic_law_names{{{ElasticLaw::neo_hookean, "neo-hookean"},
+                                                             {ElasticLaw::skalak, "skalak"}}};
+constexpr const auto& name_table(ElasticLaw) { return elastic_law_names; }
 
 // The modulus the law's formulas take (Constitutive::E_s) for the E_s of Ca = mu k a / E_s (34)
 // (docs/conventions.md "Neo-Hookean modulus"): neo-Hookean E_s/3, the small-deformation shear

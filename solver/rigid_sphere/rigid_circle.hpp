@@ -32,8 +32,8 @@ struct RigidCircleOptions {
   double spin = 0;               // anchor rotation rate, in units of k
   double kt = 4;                 // run until this kt
   double gain = 0.05;            // kappa, force per unit marker lag (lattice units)
-  std::string kernel = "peskin4";
-  std::string precision = "double";
+  ib::Delta delta = ib::Delta::peskin4;
+  lbm::Precision precision = lbm::Precision::double_precision;
   double every = 0.25;           // series interval in kt
 };
 

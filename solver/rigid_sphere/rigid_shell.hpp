@@ -21,6 +21,9 @@
 #include <string>
 #include <vector>
 
+#include "solver/ib/delta.hpp"
+#include "solver/lbm/precision.hpp"
+
 namespace capsule::rigid_sphere {
 
 struct RigidShellOptions {
@@ -33,8 +36,8 @@ struct RigidShellOptions {
   double spin = 0;                         // anchor rotation rate about z, in units of k
   double kt = 4;                           // run until this kt
   double gain = 0.01;                      // kappa, force per unit marker lag (lattice units)
-  std::string kernel = "peskin4";
-  std::string precision = "double";
+  ib::Delta delta = ib::Delta::peskin4;
+  lbm::Precision precision = lbm::Precision::double_precision;
   double every = 0.25;                     // series interval in kt
 };
 

@@ -23,8 +23,8 @@ void run(const TetheredMarkers& s, RigidShellResult& result) {
   const int nx = s.grid[0], ny = s.grid[1], nz = Dim == 3 ? s.grid[2] : 1;
   const double k = s.k, Omega = s.Omega, a = s.length, inside = s.inside;
   const ib::Grid grid{nx, ny, nz};
-  const ib::Kernel kernel = ib::kernel_from_name(s.kernel);
-  lbm::Fluid<Lattice> fluid(nx, ny, nz, s.nu, lbm::precision_from_name(s.precision));
+  const ib::Delta delta = s.delta;
+  lbm::Fluid<Lattice> fluid(nx, ny, nz, s.nu, s.precision);
   const double H = ny;
   fluid.initialise_velocity([&](double, double y, double) { return std::array<double, 3>{k * (y - 0.5 * H), 0.0, 0.0}; });
 
@@ -96,12 +96,12 @@ void run(const TetheredMarkers& s, RigidShellResult& result) {
     }
     for (std::size_t i = 0; i < Dim * n; ++i) F[i] = s.gain * (A[i] - X[i]);
     fluid.clear_force();
-    ib::spread<Dim>(grid, X.data(), F.data(), n, p, kernel);  // (21)
+    ib::spread<Dim>(grid, X.data(), F.data(), n, p, delta);  // (21)
     fluid.set_wall_velocity(-0.5 * k * H, 0.5 * k * H);      // (1)
     fluid.step();
     if (!std::isfinite(u[0][grid.index(nx / 2, ny / 2, nz / 2)]))
       throw std::runtime_error(s.name + ": the fluid blew up at kt = " + std::to_string(step * k));
-    ib::interpolate<Dim>(grid, u, X.data(), n, U.data(), kernel);    // (19)
+    ib::interpolate<Dim>(grid, u, X.data(), n, U.data(), delta);    // (19)
     if ((step + 1) % every == 0 || step + 1 == steps) row(step + 1);  // F, X, U: this step's force, where it acted
     ib::advance<Dim>(X.data(), U.data(), n, 1.0);                    // (20)
   }

@@ -33,8 +33,8 @@ struct TetheredMarkers {
   double stresslet_unit = 1;        // and its stresslet S_xy / stresslet_unit
   double length = 1;                // a: leakage and slip in units of k a, lag in units of a
   double inside = 0;                // leakage is read at the nodes closer than this to the centre
-  std::string kernel = "peskin4";
-  std::string precision = "double";
+  ib::Delta delta = ib::Delta::peskin4;
+  lbm::Precision precision = lbm::Precision::double_precision;
   std::string name = "rigid shell"; // for the error when the fluid blows up
 };
 
@@ -53,13 +53,11 @@ void validate_tethered_options(const Options& o, const std::string& body) {
   require(o.kt > 0 && o.kt <= 100, "kt must be in (0, 100], got " + std::to_string(o.kt));
   require(o.gain > 0 && o.gain <= 1, "gain must be in (0, 1], got " + std::to_string(o.gain));
   require(o.every > 0 && o.every <= o.kt, "every must be in (0, kt], got " + std::to_string(o.every));
-  ib::kernel_from_name(o.kernel);
-  lbm::precision_from_name(o.precision);
 }
 
 // The setup both bodies derive alike from their options: the fluid from tau and Re ((8), rho = 1,
 // so mu = nu; Re = k a^2 / nu), the anchors' spin, the run's length, and the measures' scales
-// (leakage read deeper than the kernel's reach, 2, plus half a node inside the markers). The
+// (leakage read deeper than the delta's reach, 2, plus half a node inside the markers). The
 // grid, the anchors and the exact units are each body's own.
 template <class Options>
 TetheredMarkers tethered_markers_from(const Options& o, int dim, const std::string& body) {
@@ -73,7 +71,7 @@ TetheredMarkers tethered_markers_from(const Options& o, int dim, const std::stri
   s.gain = o.gain;
   s.kt = o.kt;
   s.every = o.every;
-  s.kernel = o.kernel;
+  s.delta = o.delta;
   s.precision = o.precision;
   s.name = body;
   return s;

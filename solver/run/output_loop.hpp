@@ -34,16 +34,16 @@ inline void record_units(io::MemberWriter& out, const Scene& scene, const Units&
   out.set_attribute("shear_rate", u.shear_rate);
   out.set_attribute("E_s", u.E_s);
   out.set_attribute("E_B", u.E_B);
-  out.set_attribute("E_B_convention", scene.dim == 2 && scene.E_b_2d == "dissertation"
+  out.set_attribute("E_B_convention", scene.dim == 2 && scene.E_b_2d == BendingConvention2d::dissertation
                                           ? std::string("E_B = 2 E_b a^2 E_s: the dissertation's 2D E_b = E_B/(a E_s) with a = 0.5 (README Conventions)")
                                           : std::string("E_B = E_b a^2 E_s (README Conventions)"));
-  if (scene.dim == 2 && scene.shape == "biconcave")
-    out.set_attribute("biconcave_size", scene.biconcave_2d == "dissertation"
+  if (scene.dim == 2 && scene.shape == Shape::biconcave)
+    out.set_attribute("biconcave_size", scene.biconcave_2d == BiconcaveSize2d::dissertation
                                             ? std::string("(24)-(25) drawn with the printed a: equivalent radius 0.740 a (README Conventions)")
                                             : std::string("(24)-(25) scaled to equivalent radius a (README Conventions)"));
   out.set_attribute("mu_s", u.mu_s);
   out.set_attribute("steps_per_kt", u.steps_per_kt);
-  out.set_attribute("precision", scene.precision);  // of the fluid's populations
+  out.set_attribute("precision", choice_name(scene.precision));  // of the fluid's populations
   const auto n = scene.grid();
   std::ostringstream grid;
   grid << n[0] << "x" << n[1];

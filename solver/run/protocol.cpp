@@ -34,8 +34,8 @@ double Protocol::shear_factor(double kt) const {
 }
 
 double Protocol::max_total_kt() const {
-  double s = shear_.until == "time" ? shear_.kt : shear_.max_kt;
-  double r = recover_.until == "time" ? recover_.kt : recover_.max_kt;
+  double s = shear_.until == StopCondition::time ? shear_.kt : shear_.max_kt;
+  double r = recover_.until == StopCondition::time ? recover_.kt : recover_.max_kt;
   return s + r;
 }
 
@@ -61,88 +61,95 @@ void Protocol::observe(double kt, double D, double theta, double beta) {
   if (phase_ == Phase::done) return;
   kt_.push_back(kt);
   D_.push_back(D);
-
-  if (phase_ == Phase::shear) {
-    if (std::isnan(D_max_) || D > D_max_) {
-      D_max_ = D;
-      t_max_ = kt;
-    }
-    bool stop = false;
-    if (shear_.until == "time") {
-      if (kt >= shear_.kt - time_slack) { stop = true; note_ = "shear stopped at kt = " + num(shear_.kt); }
-    } else if (shear_.until == "steady") {
-      if (steady(shear_.window_kt, shear_.tolerance, 0.0)) {
-        stop = true;
-        note_ = "shear stopped when D_xy was steady (range < " + num(shear_.tolerance) + " over " +
-                num(shear_.window_kt) + " kt)";
-      }
-    } else if (shear_.until == "theta") {
-      if (have_prev_ && kt >= shear_.after_kt - time_slack && crossed(prev_theta_, theta, shear_.value, std::numbers::pi)) {
-        stop = true;
-        note_ = "shear stopped when theta reached " + num(shear_.value) + after_note(shear_.after_kt);
-      }
-    } else if (shear_.until == "beta") {
-      if (have_prev_ && kt >= shear_.after_kt - time_slack && crossed(prev_beta_, beta, shear_.value, 2 * std::numbers::pi)) {
-        stop = true;
-        note_ = "shear stopped when beta reached " + num(shear_.value) + after_note(shear_.after_kt);
-      }
-    }
-    if (!stop && shear_.until != "time" && kt >= shear_.max_kt - time_slack) {
-      stop = true;
-      note_ = "shear stopped at max_kt = " + num(shear_.max_kt) + " before its condition (" + shear_.until + ") was met";
-    }
-    if (stop) {
-      t_stop_ = kt;
-      D_stop_ = D;
-      t_min_ = kt;
-      D_min_ = D;
-      phase_ = Phase::recover;
-      if (recover_.until == "time" && recover_.kt <= 0) {
-        phase_ = Phase::done;
-        t_end_ = kt;
-        D_inf_ = D;
-        note_ += "; no recovery phase";
-      }
-    }
-  } else {  // recover
-    if (D < D_min_) {
-      D_min_ = D;
-      t_min_ = kt;
-    }
-    double since = kt - t_stop_;
-    bool end = false;
-    if (recover_.until == "time") {
-      end = since >= recover_.kt - time_slack;
-      if (end) note_ += "; recovered for " + num(recover_.kt) + " kt";
-    } else {
-      // The window grows with the recovery (PhaseSpec::window_fraction): "settled" means no
-      // change over a time long against the phase's own time scale, not a stationary point.
-      const double window = std::max(recover_.window_kt, recover_.window_fraction * since);
-      if (steady(window, recover_.tolerance, t_stop_)) {
-        end = true;
-        note_ += "; recovery ended when D_xy settled (range < " + num(recover_.tolerance) + " over the last " +
-                 num(window) + " kt)";
-      }
-    }
-    if (!end && recover_.until != "time" && since >= recover_.max_kt - time_slack) {
-      end = true;
-      note_ += "; recovery ended at max_kt = " + num(recover_.max_kt) + " before D_xy settled";
-    }
-    if (end) {
-      t_end_ = kt;
-      D_inf_ = D;
-      phase_ = Phase::done;
-    }
-  }
+  if (phase_ == Phase::shear) observe_shear(kt, D, theta, beta);
+  else observe_recovery(kt, D);
   prev_theta_ = theta;
   prev_beta_ = beta;
   have_prev_ = true;
 }
 
+bool Protocol::shear_condition_met(double kt, double theta, double beta) {
+  if (shear_.until == StopCondition::time) {
+    if (kt >= shear_.kt - time_slack) { note_ = "shear stopped at kt = " + num(shear_.kt); return true; }
+  } else if (shear_.until == StopCondition::steady) {
+    if (steady(shear_.window_kt, shear_.tolerance, 0.0)) {
+      note_ = "shear stopped when D_xy was steady (range < " + num(shear_.tolerance) + " over " +
+              num(shear_.window_kt) + " kt)";
+      return true;
+    }
+  } else if (shear_.until == StopCondition::theta) {
+    if (have_prev_ && kt >= shear_.after_kt - time_slack && crossed(prev_theta_, theta, shear_.value, std::numbers::pi)) {
+      note_ = "shear stopped when theta reached " + num(shear_.value) + after_note(shear_.after_kt);
+      return true;
+    }
+  } else if (shear_.until == StopCondition::beta) {
+    if (have_prev_ && kt >= shear_.after_kt - time_slack && crossed(prev_beta_, beta, shear_.value, 2 * std::numbers::pi)) {
+      note_ = "shear stopped when beta reached " + num(shear_.value) + after_note(shear_.after_kt);
+      return true;
+    }
+  }
+  return false;
+}
+
+void Protocol::observe_shear(double kt, double D, double theta, double beta) {
+  if (std::isnan(D_max_) || D > D_max_) {
+    D_max_ = D;
+    t_max_ = kt;
+  }
+  bool stop = shear_condition_met(kt, theta, beta);
+  if (!stop && shear_.until != StopCondition::time && kt >= shear_.max_kt - time_slack) {
+    stop = true;
+    note_ = "shear stopped at max_kt = " + num(shear_.max_kt) + " before its condition (" + choice_name(shear_.until) + ") was met";
+  }
+  if (!stop) return;
+  t_stop_ = kt;
+  D_stop_ = D;
+  t_min_ = kt;
+  D_min_ = D;
+  phase_ = Phase::recover;
+  if (recover_.until == StopCondition::time && recover_.kt <= 0) {
+    phase_ = Phase::done;
+    t_end_ = kt;
+    D_inf_ = D;
+    note_ += "; no recovery phase";
+  }
+}
+
+void Protocol::observe_recovery(double kt, double D) {
+  if (D < D_min_) {
+    D_min_ = D;
+    t_min_ = kt;
+  }
+  double since = kt - t_stop_;
+  bool end = false;
+  if (recover_.until == StopCondition::time) {
+    end = since >= recover_.kt - time_slack;
+    if (end) note_ += "; recovered for " + num(recover_.kt) + " kt";
+  } else {
+    // The window grows with the recovery (PhaseSpec::window_fraction): settled means no
+    // change over a time long against the phase's own time scale, not a stationary point.
+    const double window = std::max(recover_.window_kt, recover_.window_fraction * since);
+    if (steady(window, recover_.tolerance, t_stop_)) {
+      end = true;
+      note_ += "; recovery ended when D_xy settled (range < " + num(recover_.tolerance) + " over the last " +
+               num(window) + " kt)";
+    }
+  }
+  if (!end && recover_.until != StopCondition::time && since >= recover_.max_kt - time_slack) {
+    end = true;
+    note_ += "; recovery ended at max_kt = " + num(recover_.max_kt) + " before D_xy settled";
+  }
+  if (end) {
+    t_end_ = kt;
+    D_inf_ = D;
+    phase_ = Phase::done;
+  }
+}
+
 Protocol::Outlook Protocol::outlook() const {
   Outlook o;
-  const bool shear_capped = shear_.until != "time";
-  const bool recover_capped = recover_.until != "time";
+  const bool shear_capped = shear_.until != StopCondition::time;
+  const bool recover_capped = recover_.until != StopCondition::time;
   const double shear_end = shear_capped ? shear_.max_kt : shear_.kt;
   const double recover_span = recover_capped ? recover_.max_kt : recover_.kt;
   switch (phase_) {

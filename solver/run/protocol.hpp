@@ -60,6 +60,11 @@ class Protocol {
  private:
   enum class Phase { shear, recover, done };
   bool steady(double window_kt, double tolerance, double since_kt) const;
+  // One output row in the shear phase (and the stop, when it comes) or in the recovery.
+  void observe_shear(double kt, double D, double theta, double beta);
+  void observe_recovery(double kt, double D);
+  // The shear's stop condition (PhaseSpec::until) met at this row; sets the note.
+  bool shear_condition_met(double kt, double theta, double beta);
   static bool crossed(double previous, double current, double value, double period);
 
   PhaseSpec shear_, recover_;

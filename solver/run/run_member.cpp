@@ -120,7 +120,7 @@ int run_member(const RunOptions& options) {
       out.set_scene(scene.to_json());
       out.set_attribute("member_id", options.member_id);
       out.set_attribute("code_version", build::code_version);
-      out.set_attribute("physics_version", scene.physics_version);
+      out.set_attribute("physics_version", choice_name(scene.physics_version));
       out.set_attribute("host", host_name());
       out.set_attribute("started", started);
       out.set_attribute("dim", static_cast<long>(scene.dim));

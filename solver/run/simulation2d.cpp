@@ -25,7 +25,7 @@ namespace capsule {
 
 namespace {
 // Peskin's 4-point kernel, not the cosine kernel (18): see solver/ib/delta.hpp for the measurement.
-constexpr ib::Kernel kKernel = ib::Kernel::peskin4;
+constexpr ib::Delta kKernel = ib::Delta::peskin4;
 using Clock = std::chrono::steady_clock;
 // Mobility of the implicit Kelvin-Voigt prediction (Membrane::set_node_velocity). A node force F
 // reaches its own interpolated velocity over two steps: (3/8)^2 F / 2 = 0.0703 F in its own step
@@ -63,15 +63,15 @@ struct Simulation2D::Impl {
     // smeared membrane then acts as a circle of radius about a. E_b is the bending number of the
     // circle the membrane is: E_B = E_b r_m^2 E_s.
     const double scale = (s.a - s.marker_inset) / s.a;
-    const double r_eq = scale * (s.biconcave_2d == "dissertation" ? s.a * membrane2d::biconcave_equivalent_radius() : s.a);
-    auto xy = s.shape == "biconcave" ? membrane2d::biconcave(s.segments, r_eq, cx, cy, incline)
+    const double r_eq = scale * (s.biconcave_2d == BiconcaveSize2d::dissertation ? s.a * membrane2d::biconcave_equivalent_radius() : s.a);
+    auto xy = s.shape == Shape::biconcave ? membrane2d::biconcave(s.segments, r_eq, cx, cy, incline)
                                      : membrane2d::circle(s.segments, scale * s.a, cx, cy, incline);
     return membrane2d::Membrane(std::move(xy), {u.E_s, membrane_bending_modulus(s, u), u.mu_s});
   }
 
   Impl(const Scene& s, const Units& u, const std::vector<int>& n)
-      : scene(s), units(u), grid{n[0], n[1], 1}, fluid(n[0], n[1], 1, u.nu, lbm::precision_from_name(s.precision)),
-        membrane(make_membrane(s, u, n)), exact_kv(s.kelvin_voigt_step == "exact_mobility") {
+      : scene(s), units(u), grid{n[0], n[1], 1}, fluid(n[0], n[1], 1, u.nu, s.precision),
+        membrane(make_membrane(s, u, n)), exact_kv(s.kelvin_voigt_step == KelvinVoigtStep::exact_mobility) {
     U.assign(2 * membrane.size(), 0.0);
     area0 = membrane2d::polygon_area(membrane.positions());
     if (s.V != 1.0) {
@@ -323,7 +323,7 @@ std::string run_simulation2d(const Scene& scene, io::MemberWriter& out, const Ru
     out.set_attribute("marker_radius", r_m);
     out.set_attribute("E_B", membrane_bending_modulus(scene, u));
     out.set_attribute("E_B_convention", std::string("E_B = E_b r_m^2 E_s, r_m = a - marker_inset (the membrane's radius)") +
-                                            (scene.E_b_2d == "dissertation" ? ", with the dissertation's 2D factor 2 (README Conventions)" : ""));
+                                            (scene.E_b_2d == BendingConvention2d::dissertation ? ", with the dissertation's 2D factor 2 (README Conventions)" : ""));
   }
   out.set_attribute("segments", static_cast<long>(scene.segments));
   out.set_attribute("delta", std::string("peskin4: Peskin 4-point (zero first moment), not the cosine (18): README"));

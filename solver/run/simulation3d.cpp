@@ -77,9 +77,9 @@ class Simulation3D {
  public:
   explicit Simulation3D(const Scene& s)
       : scene_(s), units_(units_for(s, choose_tau(s))), n_(s.grid()),
-        grid_{n_[0], n_[1], n_[2]}, fluid_(n_[0], n_[1], n_[2], units_.nu, lbm::precision_from_name(s.precision)) {
+        grid_{n_[0], n_[1], n_[2]}, fluid_(n_[0], n_[1], n_[2], units_.nu, s.precision) {
     if (s.dim != 3) throw std::invalid_argument("Simulation3D: scene.dim must be 3");
-    fluid_.set_collision(lbm::collision_from_name(s.collision));
+    fluid_.set_collision(s.collision);
     build_membrane();
     U_.assign(3 * mesh_.vertex_count(), 0.0);
     const double k = units_.shear_rate, H = grid_.ny;
@@ -89,9 +89,9 @@ class Simulation3D {
     });
     // The viscosity field exists only for a contrast (V != 1) or a power-law membrane (K > 0).
     if (s.V != 1.0) contrast_ = std::make_unique<ib::ViscosityContrast<3>>(grid_, units_.nu, units_.nu_inside);
-    if (s.power_law_K > 0 && s.power_law_model == "fluid_shell") {
+    if (s.power_law_K > 0 && s.power_law_model == PowerLawModel::fluid_shell) {
       power_law_ = std::make_unique<ib::PowerLawViscosity<3>>(
-          grid_, kernel_, ib::PowerLawParameters{s.power_law_K, s.power_law_n, units_.nu, s.a, units_.shear_rate});
+          grid_, delta_, ib::PowerLawParameters{s.power_law_K, s.power_law_n, units_.nu, s.a, units_.shear_rate});
       if (contrast_) base_nu_.assign(grid_.size(), units_.nu);
     }
     if (contrast_ || power_law_) update_viscosity();
@@ -155,18 +155,18 @@ class Simulation3D {
     double* p[3] = {fluid_.force(0), fluid_.force(1), fluid_.force(2)};
     // The force field is zero except where the last step spread: clear only there, then spread
     // (21), both on all threads, bitwise the serial spreading (spreading_box.hpp).
-    spreading_.clear_last_and_spread(grid_, positions(), reinterpret_cast<const double*>(force_.data()), n, p, kernel_);
+    spreading_.clear_last_and_spread(grid_, positions(), reinterpret_cast<const double*>(force_.data()), n, p, delta_);
     timings_.spreading += std::chrono::duration<double>(Clock::now() - t0).count();
     const double wall = 0.5 * units_.shear_rate * grid_.ny * shear_factor;                  // k H / 2 (1)
     fluid_.set_wall_velocity(-wall, wall);
     const double* u[3] = {fluid_.velocity(0), fluid_.velocity(1), fluid_.velocity(2)};
     // previous_velocity: U^n(X^n), the fluid velocity of the time level of F(X^n) (membrane_update.hpp).
-    if (update_ == ib::MembraneUpdate::previous_velocity) ib::interpolate<3>(grid_, u, positions(), n, U_.data(), kernel_);
+    if (update_ == ib::MembraneUpdate::previous_velocity) ib::interpolate<3>(grid_, u, positions(), n, U_.data(), delta_);
     set_macroscopic_region();
     auto t1 = Clock::now();
     fluid_.step();
     auto t2 = Clock::now();
-    if (update_ != ib::MembraneUpdate::previous_velocity) ib::interpolate<3>(grid_, u, positions(), n, U_.data(), kernel_);  // (19)
+    if (update_ != ib::MembraneUpdate::previous_velocity) ib::interpolate<3>(grid_, u, positions(), n, U_.data(), delta_);  // (19)
     if (update_ == ib::MembraneUpdate::adams_bashforth2) ib::advance_adams_bashforth2<3>(positions(), U_.data(), U_previous_, n, 1.0);
     else ib::advance<3>(positions(), U_.data(), n, 1.0);  // (20)
     auto t3 = Clock::now();
@@ -348,20 +348,20 @@ class Simulation3D {
     const m3::Mesh unit = m3::unit_icosphere(s.mesh_level);
     const m3::Vec3 centre(0.5 * grid_.nx, 0.5 * grid_.ny, 0.5 * grid_.nz);
     const double incline = 0.25 * std::numbers::pi;  // 45 degrees in the xy-plane (Sec. 2.5)
-    if (s.shape == "sphere") mesh_ = m3::sphere_mesh(unit, r_m);
-    else if (s.shape == "biconcave") mesh_ = m3::biconcave_mesh(unit, r_m);
-    else throw std::invalid_argument("3D shape must be sphere or biconcave, got '" + s.shape + "'");
+    if (s.shape == Shape::sphere) mesh_ = m3::sphere_mesh(unit, r_m);
+    else if (s.shape == Shape::biconcave) mesh_ = m3::biconcave_mesh(unit, r_m);
+    else throw std::invalid_argument("3D shape must be sphere or biconcave, got '" + choice_name(s.shape) + "'");
     // Table 1, case C: the stress-free reference is the sphere with the start shape's area.
     m3::Mesh reference = mesh_;
-    if (s.reference_case == "C") reference = m3::sphere_mesh(unit, std::sqrt(m3::surface_area(mesh_) / (4.0 * std::numbers::pi)));
+    if (s.reference_case == ReferenceCase::C) reference = m3::sphere_mesh(unit, std::sqrt(m3::surface_area(mesh_) / (4.0 * std::numbers::pi)));
     m3::rotate_about_z_and_translate(mesh_, incline, centre);
     m3::rotate_about_z_and_translate(reference, incline, centre);
 
     m3::MembraneParameters p;
-    kernel_ = ib::kernel_from_name(s.kernel);
-    update_ = ib::membrane_update_from_name(s.membrane_update);
+    delta_ = s.delta;
+    update_ = s.membrane_update;
     shear_modulus_ = shear_modulus_3d(s, units_);
-    p.law = m3::Constitutive{m3::elastic_law_from_name(s.law), shear_modulus_, s.C};
+    p.law = m3::Constitutive{elastic_law_3d(s.law), shear_modulus_, s.C};
     // The Maxwell element (solver/scene/units.hpp): the SLS (63)-(67), E_m = G E_s, tau_m = mu_s /
     // E_m (docs/conventions.md "Membrane viscosity in 3D"), mu_s = eta a mu_a (36); or the power law
     // in the membrane (scene power_law.model): the same element with the surface viscosity (102)
@@ -384,7 +384,7 @@ class Simulation3D {
     // factor: its strain does not carry a length, docs/findings/immersed_boundary_error_budget.md).
     E_B_ = membrane_bending_modulus(s, units_);
     p.E_B = E_B_;
-    if (s.reference_case == "B") {
+    if (s.reference_case == ReferenceCase::B) {
       // c0 = 2 kappa of the start shape, node by node (Table 1, case B).
       const m3::Curvatures k = m3::fit_curvatures(mesh_);
       p.c0.resize(mesh_.vertex_count());
@@ -465,10 +465,8 @@ class Simulation3D {
   ib::SpreadingBox spreading_;       // (21); knows the box the last step spread to
   m3::PhaseTracker phase_;
   double E_B_ = 0, K_v_ = 0, area0_ = 0, shear_modulus_ = 0, tau_m_ = 0;
-  // IB delta (scene resolution.kernel, solver/ib/delta.hpp). Default Peskin's 4-point kernel, as
-  // in 2D: the cosine kernel (18) has no zero first moment, so it interpolates a linear shear
-  // with a lattice-locked error (docs/guide/model.md "Immersed boundary kernel").
-  ib::Kernel kernel_ = ib::Kernel::peskin4;
+  // IB delta (scene resolution.kernel, solver/ib/delta.hpp), the scene's.
+  ib::Delta delta_ = ib::Delta::peskin4;
   // Time level and order of the position update (scene resolution.membrane_update,
   // solver/ib/membrane_update.hpp); U_previous_: the last step's U, adams_bashforth2 only.
   ib::MembraneUpdate update_ = ib::MembraneUpdate::euler;
@@ -534,26 +532,27 @@ std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, const Ru
   out.set_attribute("mesh_level", static_cast<long>(scene.mesh_level));
   out.set_attribute("vertices", static_cast<long>(mesh.vertex_count()));
   out.set_attribute("triangles", static_cast<long>(mesh.triangle_count()));
-  out.set_attribute("law", scene.law);
+  out.set_attribute("law", choice_name(scene.law));
   out.set_attribute("C", scene.C);
   out.set_attribute("G", scene.G);
-  out.set_attribute("reference_case", scene.reference_case);
-  const bool membrane_power_law = scene.power_law_K > 0 && scene.power_law_model == "membrane";
+  out.set_attribute("reference_case", choice_name(scene.reference_case));
+  const bool membrane_power_law = scene.power_law_K > 0 && scene.power_law_model == PowerLawModel::membrane;
   out.set_attribute("viscoelastic", scene.eta > 0 ? std::string("standard linear solid (63)-(67), tau_m = mu_s/E_m")
                                     : membrane_power_law ? std::string("standard linear solid (63)-(67), tau = mu_s(gamma)/E_m per triangle (power law (102))")
                                                          : std::string("none"));
-  out.set_attribute("sls_viscosity", scene.sls_viscosity == "dissertation"
+  out.set_attribute("sls_viscosity", scene.sls_viscosity == SlsViscosity::dissertation
                                          ? std::string("dissertation: (63) read literally, Kelvin-Voigt limit mu_s/3 = eta a mu_a/3")
                                          : std::string("physical: Kelvin-Voigt limit mu_s = eta a mu_a"));
-  if (scene.eta > 0 || (scene.power_law_K > 0 && scene.power_law_model == "membrane")) out.set_attribute("tau_m", sim.tau_m());
-  out.set_attribute("delta", scene.kernel == "peskin4"
+  if (scene.eta > 0 || membrane_power_law) out.set_attribute("tau_m", sim.tau_m());
+  out.set_attribute("delta", scene.delta == ib::Delta::peskin4
                                  ? std::string("peskin4: Peskin 4-point (zero first moment), not the cosine (18): README")
-                                 : scene.kernel);
+                                 : choice_name(scene.delta));
   out.set_attribute("marker_inset", scene.marker_inset);
   out.set_attribute("marker_radius", scene.a - scene.marker_inset);
-  out.set_attribute("marker_inset_rule", scene.marker_inset_rule.empty() ? std::string("given")
-                                                                          : scene.marker_inset_rule + ": r_m + d_S(r_m) = a, solver/ib/hydrodynamic_radius.hpp");
-  if (scene.power_law_K > 0 && scene.power_law_model == "membrane")
+  out.set_attribute("marker_inset_rule", scene.marker_inset_rule == MarkerInsetRule::given
+                                             ? choice_name(scene.marker_inset_rule)
+                                             : choice_name(scene.marker_inset_rule) + ": r_m + d_S(r_m) = a, solver/ib/hydrodynamic_radius.hpp");
+  if (membrane_power_law)
     out.set_attribute("power_law", std::string("membrane: mu_s = K a mu_a (gamma/k)^(n - 1) (102) per triangle, gamma = sqrt(2 tr D_s^2) (101) of the triangle's "
                                                "own surface rate of deformation over the last step, in units of k, floored at 0.01; the "
                                                "Maxwell element of the standard linear solid (63)-(67) with E_m = G E_s and tau = mu_s / E_m"));
@@ -572,7 +571,7 @@ std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, const Ru
       [&](std::vector<double>& beta) { return sim.row(beta); },
       [&](double kt) {
         out.add_shape(kt, sim.shape(), 3, triangles);
-        if (scene.snapshots == "vtk") {
+        if (scene.snapshots == Snapshots::vtk) {
           const std::string file = snapshot_path(out.final_path(), kt);
           // Points in units of a from the domain centre, as the series centroid_x/y/z.
           const m3::VtkFrame frame{0.5 * m3::Vec3(scene.grid()[0], scene.grid()[1], scene.grid()[2]), scene.a};

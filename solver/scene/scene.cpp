@@ -76,20 +76,22 @@ class ObjectReader {
     return static_cast<int>(x);
   }
 
-  std::string choice(const std::string& key, std::optional<std::string> fallback,
-                     const std::vector<std::string>& allowed) {
+  // A choice among `allowed` (names from the choice's table, in this order); a missing key is
+  // `fallback`, or refused when there is none.
+  template <class E>
+  E choice(const std::string& key, std::optional<E> fallback, const std::vector<E>& allowed) {
     std::string list;
-    for (const auto& a : allowed) list += (list.empty() ? "" : " | ") + a;
+    for (const E a : allowed) list += (list.empty() ? "" : " | ") + choice_name(a);
     if (!has(key)) {
       if (!fallback) fail(key, "missing required key", list);
       return *fallback;
     }
     const json& v = j_.at(key);
     if (!v.is_string()) fail(key, "expected a string, got " + message_value(v), list);
-    std::string s = v.get<std::string>();
-    for (const auto& a : allowed)
-      if (s == a) return s;
-    fail(key, "unknown value " + message_value(s), list);
+    const std::optional<E> e = choice_from_name<E>(v.get<std::string>());
+    for (const E a : allowed)
+      if (e == a) return a;
+    fail(key, "unknown value " + message_value(v), list);
   }
 
   std::vector<double> numbers(const std::string& key, std::vector<double> fallback, double lo,
@@ -144,20 +146,21 @@ class ObjectReader {
 };
 
 PhaseSpec read_phase(const json& j, const std::string& source, const std::string& path, bool shear) {
+  using enum StopCondition;
   ObjectReader r(j, source, path,
                  shear ? std::vector<std::string>{"until", "kt", "value", "after_kt", "tolerance", "window_kt", "max_kt",
                                                   "oscillatory_period_kt"}
                        : std::vector<std::string>{"until", "kt", "value", "tolerance", "window_kt", "window_fraction",
                                                   "max_kt"});
   PhaseSpec p;
-  p.until = shear ? r.choice("until", std::nullopt, {"time", "steady", "theta", "beta"})
-                  : r.choice("until", std::nullopt, {"time", "settled"});
-  if (p.until == "time") {
+  p.until = shear ? r.choice<StopCondition>("until", std::nullopt, {time, steady, theta, beta})
+                  : r.choice<StopCondition>("until", std::nullopt, {time, settled});
+  if (p.until == time) {
     p.kt = r.number("kt", std::nullopt, shear ? 0.0 : 0.0, 1e4, shear, false);
   } else {
-    p.kt = r.number("kt", 0.0, 0.0, 0.0);  // only meaningful for "time"
+    p.kt = r.number("kt", 0.0, 0.0, 0.0);  // only meaningful for until time
   }
-  if (p.until == "theta" || p.until == "beta") {
+  if (p.until == theta || p.until == beta) {
     p.value = r.number("value", std::nullopt, -10.0, 10.0);
     p.after_kt = r.number("after_kt", 0.0, 0.0, 1e4);
   } else {
@@ -166,7 +169,7 @@ PhaseSpec read_phase(const json& j, const std::string& source, const std::string
   p.tolerance = r.number("tolerance", 1e-3, 0.0, 1.0, true);
   p.window_kt = r.number("window_kt", 2.0, 0.0, 100.0, true);
   p.max_kt = r.number("max_kt", 50.0, 0.0, 1e4, true);
-  if (p.until == "time" && p.kt > p.max_kt) p.max_kt = p.kt;
+  if (p.until == time && p.kt > p.max_kt) p.max_kt = p.kt;
   if (p.after_kt >= p.max_kt)
     r.fail("after_kt", "the stop condition would never be tested before max_kt = " + std::to_string(p.max_kt),
            "[0, max_kt)");
@@ -177,7 +180,7 @@ PhaseSpec read_phase(const json& j, const std::string& source, const std::string
     // A turning point of a slow recovery (a tank-treading biconcave capsule's D_xy falls for
     // ~15 kt, then rises for ~75 kt, Fig. 30) is stationary over any fixed short window; a
     // window that grows with the time since the stop is not fooled by it.
-    p.window_fraction = p.until == "settled" ? r.number("window_fraction", 0.5, 0.0, 1.0) : r.number("window_fraction", 0.0, 0.0, 0.0);
+    p.window_fraction = p.until == settled ? r.number("window_fraction", 0.5, 0.0, 1.0) : r.number("window_fraction", 0.0, 0.0, 0.0);
     r.refuse_unknown();
   }
   return p;
@@ -186,7 +189,7 @@ PhaseSpec read_phase(const json& j, const std::string& source, const std::string
 // Keys the model of the other dimension reads are put back to their defaults, so the
 // canonical scene -- and with it the member id -- does not depend on values this model
 // ignores. 2D (simulation2d.cpp) reads none of C, G, c0, volume_penalty, power_law.n,
-// mesh_level, kernel or snapshots (K > 0 and a kernel other than peskin4 are refused
+// mesh_level, kernel or snapshots (K > 0 and a delta other than peskin4 are refused
 // above); 3D reads no segments.
 void ignore_other_dimension(Scene& s) {
   const Scene defaults;
@@ -197,20 +200,15 @@ void ignore_other_dimension(Scene& s) {
     s.volume_penalty = defaults.volume_penalty;
     s.power_law_n = defaults.power_law_n;
     s.mesh_level = defaults.mesh_level;
-    s.kernel = defaults.kernel;
+    s.delta = defaults.delta;
     s.snapshots = defaults.snapshots;
   } else {
     s.segments = defaults.segments;
   }
 }
 
-}  // namespace
-
-Scene Scene::from_json(const json& j, const std::string& source) {
-  ObjectReader r(j, source, "",
-                 {"dim", "physics_version", "shape", "law", "C", "Re", "Ca", "E_b", "V", "eta", "G", "c0",
-                  "reference_case", "volume_penalty", "power_law", "conventions", "resolution", "protocol", "output"});
-  Scene s;
+// dim and physics_version: what the rest of the scene's defaults depend on.
+void read_dim_and_version(ObjectReader& r, const json& j, Scene& s) {
   s.dim = r.integer("dim", 0, 2, 3);
   if (!r.has("dim")) r.fail("dim", "missing required key", "2 | 3");
   // The physics the scene runs: this solver's (the default), or version 5's defaults, so that
@@ -219,19 +217,23 @@ Scene Scene::from_json(const json& j, const std::string& source) {
     const json& v = j.at("physics_version");
     const std::string text = v.is_string() ? v.get<std::string>()
                              : v.is_number_integer() ? std::to_string(v.get<long long>()) : std::string();
-    if (text != capsule::physics_version && text != "5")
+    const std::optional<PhysicsVersion> version = choice_from_name<PhysicsVersion>(text);
+    if (!version)
       r.fail("physics_version", "physics version " + message_value(v) + " is not one this solver runs",
              std::string("\"") + capsule::physics_version + "\" (this solver's) or \"5\"");
-    s.physics_version = text;
+    s.physics_version = *version;
   }
-  const bool v5 = s.physics_version == "5";
+}
+
+// The capsule: shape, law and the dimensionless groups (34)-(36), (60)-(67), (84).
+void read_capsule(ObjectReader& r, Scene& s) {
   if (s.dim == 2) {
-    s.shape = r.choice("shape", std::nullopt, {"circle", "biconcave"});
-    s.law = r.choice("law", std::string("hooke"), {"hooke"});
+    s.shape = r.choice<Shape>("shape", std::nullopt, {Shape::circle, Shape::biconcave});
+    s.law = r.choice<MembraneLaw>("law", MembraneLaw::hooke, {MembraneLaw::hooke});
   } else {
-    s.shape = r.choice("shape", std::nullopt, {"sphere", "biconcave"});
-    s.law = r.choice("law", std::string(s.shape == "sphere" ? "neo-hookean" : "skalak"),
-                     {"neo-hookean", "skalak"});
+    s.shape = r.choice<Shape>("shape", std::nullopt, {Shape::sphere, Shape::biconcave});
+    s.law = r.choice<MembraneLaw>("law", s.shape == Shape::sphere ? MembraneLaw::neo_hookean : MembraneLaw::skalak,
+                                  {MembraneLaw::neo_hookean, MembraneLaw::skalak});
   }
   s.C = r.number("C", 15.0, 0.0, 1e3, true);
   s.Re = r.number("Re", 0.05, 0.0, 10.0, true);
@@ -241,143 +243,174 @@ Scene Scene::from_json(const json& j, const std::string& source) {
   s.eta = r.number("eta", std::nullopt, 0.0, 1e3);
   s.G = r.number("G", 50.0, 0.0, 1e4, true);
   s.c0 = r.number("c0", 0.0, -10.0, 10.0);
+  using enum ReferenceCase;
   if (s.dim == 3) {
-    s.reference_case = r.choice("reference_case", std::string("none"), {"none", "A", "B", "C"});
-    if (s.reference_case != "none" && s.shape != "biconcave")
-      r.fail("reference_case", "case " + s.reference_case + " needs shape \"biconcave\"",
+    s.reference_case = r.choice<ReferenceCase>("reference_case", none, {none, A, B, C});
+    if (s.reference_case != none && s.shape != Shape::biconcave)
+      r.fail("reference_case", "case " + choice_name(s.reference_case) + " needs shape \"biconcave\"",
              "none for a sphere");
   } else {
-    s.reference_case = r.choice("reference_case", std::string("none"), {"none"});
+    s.reference_case = r.choice<ReferenceCase>("reference_case", none, {none});
   }
   s.volume_penalty = r.number("volume_penalty", 0.0, 0.0, 1e6);
+}
 
-  {
-    json pl = r.object("power_law", false);
-    ObjectReader p(pl, source, r.child_path("power_law"), {"K", "n", "model"});
-    s.power_law_K = p.number("K", 0.0, 0.0, 1e3);
-    s.power_law_n = p.number("n", 1.0, 0.0, 3.0, true);
-    // "membrane" by default (physics version 6): it converges with a and does not move with the
-    // fluid's tau, where the text's shell (103)-(104) does both (docs/findings/accuracy_and_stability.md).
-    const std::string model_default = v5 ? "fluid_shell" : "membrane";
-    s.power_law_model = p.choice("model", model_default, {"fluid_shell", "membrane"});
-    // The 2D driver refuses it (simulation2d.cpp); `capsule check` and `study plan` must too.
-    if (s.dim == 2 && s.power_law_K > 0)
-      p.fail("K", "the power-law membrane viscosity (Sec. 5.2) is a 3D model; in 2D use eta (Kelvin-Voigt)",
-             "0 in 2D");
-    // The membrane reading is the standard linear solid's Maxwell element with a power-law
-    // viscosity: it replaces the Kelvin-Voigt eta, it is not added to it.
-    if (s.power_law_model == "membrane" && s.power_law_K > 0 && s.eta > 0)
-      p.fail("model", "\"membrane\" puts the power law in the membrane's own viscous element, which eta = " +
-                          std::to_string(s.eta) + " already sets",
-             "eta = 0 with model \"membrane\", or model \"fluid_shell\"");
-    if (s.power_law_model == "membrane" && s.power_law_K > 0 && !(s.G > 0))
-      p.fail("model", "\"membrane\" needs the Maxwell modulus G = E_m / E_s > 0", "G > 0");
-    if (!(s.power_law_K > 0)) s.power_law_model = model_default;  // no power law: the key means nothing
-    p.refuse_unknown();
+// power_law: (102) and where it acts.
+void read_power_law(ObjectReader& r, Scene& s, const SceneDefaults& defaults) {
+  using enum PowerLawModel;
+  json pl = r.object("power_law", false);
+  ObjectReader p(pl, r.source(), r.child_path("power_law"), {"K", "n", "model"});
+  s.power_law_K = p.number("K", 0.0, 0.0, 1e3);
+  s.power_law_n = p.number("n", 1.0, 0.0, 3.0, true);
+  // membrane by default (physics version 6): it converges with a and does not move with the
+  // fluid's tau, where the text's shell (103)-(104) does both (docs/findings/accuracy_and_stability.md).
+  s.power_law_model = p.choice<PowerLawModel>("model", defaults.power_law_model, {fluid_shell, membrane});
+  // The 2D driver refuses it (simulation2d.cpp); `capsule check` and `study plan` must too.
+  if (s.dim == 2 && s.power_law_K > 0)
+    p.fail("K", "the power-law membrane viscosity (Sec. 5.2) is a 3D model; in 2D use eta (Kelvin-Voigt)",
+           "0 in 2D");
+  // The membrane reading is the standard linear solid's Maxwell element with a power-law
+  // viscosity: it replaces the Kelvin-Voigt eta, it is not added to it.
+  if (s.power_law_model == membrane && s.power_law_K > 0 && s.eta > 0)
+    p.fail("model", "\"membrane\" puts the power law in the membrane's own viscous element, which eta = " +
+                        std::to_string(s.eta) + " already sets",
+           "eta = 0 with model \"membrane\", or model \"fluid_shell\"");
+  if (s.power_law_model == membrane && s.power_law_K > 0 && !(s.G > 0))
+    p.fail("model", "\"membrane\" needs the Maxwell modulus G = E_m / E_s > 0", "G > 0");
+  if (!(s.power_law_K > 0)) s.power_law_model = defaults.power_law_model;  // no power law: the key means nothing
+  p.refuse_unknown();
+}
+
+// conventions: the dissertation's readings beside the physical ones (docs/conventions.md).
+void read_conventions(ObjectReader& r, Scene& s) {
+  json conv = r.object("conventions", false);
+  ObjectReader c(conv, r.source(), r.child_path("conventions"), {"sls_viscosity", "E_b_2d", "biconcave_2d"});
+  s.sls_viscosity = c.choice<SlsViscosity>("sls_viscosity", SlsViscosity::physical,
+                                           {SlsViscosity::physical, SlsViscosity::dissertation});
+  s.E_b_2d = c.choice<BendingConvention2d>("E_b_2d", BendingConvention2d::dimensionless,
+                                           {BendingConvention2d::dimensionless, BendingConvention2d::dissertation});
+  if (s.dim == 2 && s.sls_viscosity != SlsViscosity::physical)
+    c.fail("sls_viscosity", "the standard linear solid is the 3D membrane's", "\"physical\" in 2D");
+  if (s.dim == 3 && s.E_b_2d != BendingConvention2d::dimensionless)
+    c.fail("E_b_2d", "the 2D bending convention does not apply to a 3D scene", "\"dimensionless\" in 3D");
+  s.biconcave_2d = c.choice<BiconcaveSize2d>("biconcave_2d", BiconcaveSize2d::equivalent,
+                                             {BiconcaveSize2d::equivalent, BiconcaveSize2d::dissertation});
+  if (s.biconcave_2d != BiconcaveSize2d::equivalent && (s.dim != 2 || s.shape != Shape::biconcave))
+    c.fail("biconcave_2d", "the size reading of (24)-(25) applies to the 2D biconcave capsule only",
+           "\"equivalent\" unless dim is 2 and shape is \"biconcave\"");
+  c.refuse_unknown();
+}
+
+// resolution: the lattice (a, domain, membrane discretisation, tau).
+void read_lattice(ObjectReader& q, const json& res, Scene& s, const SceneDefaults& defaults) {
+  s.a = q.number("a", 10.0, 2.0, 200.0);
+  s.domain = q.numbers("domain", defaults.domain, 3.0, 100.0, s.dim, s.dim);
+  s.segments = q.integer("segments", 140, 16, 100000);
+  s.mesh_level = q.integer("mesh_level", 4, 0, 6);
+  if (q.has("tau")) {
+    const json& t = res.at("tau");
+    if (!t.is_number() || (t.get<double>() != 0.0 &&
+                           (t.get<double>() < 0.505 || t.get<double>() > 10.0)))
+      q.fail("tau", "relaxation time " + message_value(t) + " cannot be run stably",
+             "0 (chosen by the solver) or [0.505, 10]");
+    s.tau = t.get<double>();
   }
-  {
-    json conv = r.object("conventions", false);
-    ObjectReader c(conv, source, r.child_path("conventions"), {"sls_viscosity", "E_b_2d", "biconcave_2d"});
-    s.sls_viscosity = c.choice("sls_viscosity", std::string("physical"), {"physical", "dissertation"});
-    s.E_b_2d = c.choice("E_b_2d", std::string("dimensionless"), {"dimensionless", "dissertation"});
-    if (s.dim == 2 && s.sls_viscosity != "physical")
-      c.fail("sls_viscosity", "the standard linear solid is the 3D membrane's", "\"physical\" in 2D");
-    if (s.dim == 3 && s.E_b_2d != "dimensionless")
-      c.fail("E_b_2d", "the 2D bending convention does not apply to a 3D scene", "\"dimensionless\" in 3D");
-    s.biconcave_2d = c.choice("biconcave_2d", std::string("equivalent"), {"equivalent", "dissertation"});
-    if (s.biconcave_2d != "equivalent" && (s.dim != 2 || s.shape != "biconcave"))
-      c.fail("biconcave_2d", "the size reading of (24)-(25) applies to the 2D biconcave capsule only",
-             "\"equivalent\" unless dim is 2 and shape is \"biconcave\"");
-    c.refuse_unknown();
+}
+
+// resolution: the IB delta, the fluid's precision and the membrane update (20).
+void read_delta_and_update(ObjectReader& q, Scene& s, const SceneDefaults& defaults) {
+  using enum ib::Delta;
+  // 3D: Roma, Peskin and Berger's 3-point delta by default (physics version 6): with the
+  // stresslet's marker inset it has the smaller finite-Ca error of the two measured deltas at
+  // 27 nodes a stencil instead of 64 (docs/findings/immersed_boundary_error_budget.md).
+  s.delta = q.choice<ib::Delta>("kernel", defaults.delta, {peskin4, roma3, linear2, cosine, keys4});
+  // The 2D driver's implicit Kelvin-Voigt step uses the self-mobility of peskin4 (simulation2d.cpp).
+  if (s.dim == 2 && s.delta != peskin4)
+    q.fail("kernel", "kernel \"" + choice_name(s.delta) + "\" is 3D only", "\"peskin4\" in 2D");
+  // 3D single by default (campaigns/precision_*.json: steady D_xy and fitted times within 1e-4
+  // relative of double, the fluid about 2x faster); 2D double (cheap, its campaigns ran so).
+  s.precision = q.choice<lbm::Precision>("precision", defaults.precision,
+                                         {lbm::Precision::double_precision, lbm::Precision::single_precision});
+  using enum ib::MembraneUpdate;
+  s.membrane_update =
+      q.choice<ib::MembraneUpdate>("membrane_update", euler, {euler, previous_velocity, adams_bashforth2});
+  if (s.dim == 2 && s.membrane_update != euler)
+    q.fail("membrane_update", "membrane update \"" + choice_name(s.membrane_update) + "\" is 3D only", "\"euler\" in 2D");
+}
+
+// resolution.marker_inset: markers inside the radius (the immersed boundary's hydrodynamic
+// radius is larger than its markers': capsule rigid-sphere,
+// docs/findings/immersed_boundary_error_budget.md). 3D default the stresslet's rule
+// (solver/ib/hydrodynamic_radius.hpp) where the delta's shell was measured, else 0; 2D 0; a
+// number sets it in lattice units.
+void read_marker_inset(ObjectReader& q, const json& res, Scene& s, const SceneDefaults& defaults) {
+  using enum MarkerInsetRule;
+  s.marker_inset_rule = defaults.marker_inset_rule == stresslet && ib::stresslet_radius_gap(s.delta) ? stresslet : given;
+  s.marker_inset = 0.0;
+  if (q.has("marker_inset")) {
+    const json& m = res.at("marker_inset");
+    if (m.is_string() && choice_from_name<MarkerInsetRule>(m.get<std::string>()) == stresslet) {
+      s.marker_inset_rule = stresslet;
+    } else if (m.is_number()) {
+      s.marker_inset_rule = given;
+      s.marker_inset = q.number("marker_inset", 0.0, 0.0, 2.0);
+    } else {
+      q.fail("marker_inset", "marker inset " + message_value(m) + " is neither a number nor a rule",
+             "\"stresslet\" or a number in [0, 2]");
+    }
   }
-  {
-    json res = r.object("resolution", false);
-    ObjectReader q(res, source, r.child_path("resolution"),
-                   {"a", "domain", "segments", "mesh_level", "tau", "kernel", "precision", "membrane_update",
-                    "marker_inset", "kelvin_voigt_step", "collision"});
-    s.a = q.number("a", 10.0, 2.0, 200.0);
-    std::vector<double> dflt = s.dim == 2 ? std::vector<double>{16, 12} : std::vector<double>{10, 10, 8};
-    s.domain = q.numbers("domain", dflt, 3.0, 100.0, s.dim, s.dim);
-    s.segments = q.integer("segments", 140, 16, 100000);
-    s.mesh_level = q.integer("mesh_level", 4, 0, 6);
-    if (q.has("tau")) {
-      const json& t = res.at("tau");
-      if (!t.is_number() || (t.get<double>() != 0.0 &&
-                             (t.get<double>() < 0.505 || t.get<double>() > 10.0)))
-        q.fail("tau", "relaxation time " + message_value(t) + " cannot be run stably",
-               "0 (chosen by the solver) or [0.505, 10]");
-      s.tau = t.get<double>();
-    }
-    // 3D: Roma, Peskin and Berger's 3-point kernel by default (physics version 6): with the
-    // stresslet's marker inset it has the smaller finite-Ca error of the two measured kernels at
-    // 27 nodes a stencil instead of 64 (docs/findings/immersed_boundary_error_budget.md).
-    s.kernel = q.choice("kernel", std::string(s.dim == 3 && !v5 ? "roma3" : "peskin4"), {"peskin4", "roma3", "linear2", "cosine", "keys4"});
-    // The 2D driver's implicit Kelvin-Voigt step uses the self-mobility of peskin4 (simulation2d.cpp).
-    if (s.dim == 2 && s.kernel != "peskin4")
-      q.fail("kernel", "kernel \"" + s.kernel + "\" is 3D only", "\"peskin4\" in 2D");
-    // Precision of the fluid's populations (solver/lbm/precision.hpp). 3D: single by default,
-    // after the precision comparison (campaigns/precision_*.json and the reference member at
-    // a = 10: steady D_xy and fitted times within 1e-4 relative of double, the fluid about 2x
-    // faster). 2D: double (a 2D member is cheap and its campaigns ran in double).
-    s.precision = q.choice("precision", default_precision(s.dim), {"double", "single"});
-    // Time level and order of the membrane position update (20).
-    s.membrane_update =
-        q.choice("membrane_update", std::string("euler"), {"euler", "previous_velocity", "adams_bashforth2"});
-    if (s.dim == 2 && s.membrane_update != "euler")
-      q.fail("membrane_update", "membrane update \"" + s.membrane_update + "\" is 3D only", "\"euler\" in 2D");
-    // Markers inside the radius (the immersed boundary's hydrodynamic radius is larger than its
-    // markers': capsule rigid-sphere, docs/findings/immersed_boundary_error_budget.md).
-    // 3D default "stresslet": the inset at which a rigid shell of markers exerts the stresslet of
-    // a sphere of radius a (solver/ib/hydrodynamic_radius.hpp); a number sets it in lattice units.
-    // By default only where the kernel's shell was measured (peskin4, roma3, keys4); elsewhere 0.
-    s.marker_inset_rule = s.dim == 3 && !v5 && ib::stresslet_radius_gap(s.kernel) ? "stresslet" : "";
-    s.marker_inset = 0.0;
-    if (q.has("marker_inset")) {
-      const json& m = res.at("marker_inset");
-      if (m.is_string() && m.get<std::string>() == "stresslet") {
-        s.marker_inset_rule = "stresslet";
-      } else if (m.is_number()) {
-        s.marker_inset_rule.clear();
-        s.marker_inset = q.number("marker_inset", 0.0, 0.0, 2.0);
-      } else {
-        q.fail("marker_inset", "marker inset " + message_value(m) + " is neither a number nor a rule",
-               "\"stresslet\" or a number in [0, 2]");
-      }
-    }
-    // 2D: none by default (the circle's membrane sits on a); a number, or the rule where the
-    // 2D circle of markers was measured (capsule rigid-circle), is a scene choice.
-    if (s.marker_inset_rule == "stresslet") {
-      const auto gap = s.dim == 3 ? ib::stresslet_radius_gap(s.kernel) : ib::stresslet_radius_gap_2d(s.kernel);
-      if (!gap)
-        q.fail("marker_inset", std::string("the stresslet's inset is measured for the kernels ") +
-                                   (s.dim == 3 ? "peskin4, roma3 and keys4" : "peskin4") + " in " + std::to_string(s.dim) +
-                                   "D, not \"" + s.kernel + "\"",
-               "a number in [0, 2] with kernel \"" + s.kernel + "\"");
-      s.marker_inset = ib::stresslet_marker_inset(*gap, s.a);
-      if (!(s.marker_inset >= 0.0))
-        q.fail("marker_inset", "the stresslet's inset has no solution at a = " + std::to_string(s.a) + " with kernel " + s.kernel,
-               "a >= " + std::to_string(ib::stresslet_inset_min_radius(*gap)) + ", or a number in [0, 2]");
-    }
-    if (s.marker_inset > 0.25 * s.a)
-      q.fail("marker_inset", "marker inset " + std::to_string(s.marker_inset) + " is more than a quarter of a", "[0, a/4]");
-    // How the 2D membrane's Kelvin-Voigt viscosity (31) is taken implicitly (simulation2d.cpp).
-    // "exact_mobility" by default (physics version 6): stable at any eta, and the eta <= 12
-    // members move by less than 0.5 % (docs/findings/kelvin_voigt_2d.md).
-    s.kelvin_voigt_step = q.choice("kelvin_voigt_step", std::string(s.dim == 2 && !v5 ? "exact_mobility" : "approximate_mobility"),
-                                   {"approximate_mobility", "exact_mobility"});
-    if (s.dim == 3 && s.kelvin_voigt_step != "approximate_mobility")
-      q.fail("kelvin_voigt_step",
-             "Kelvin-Voigt step \"" + s.kelvin_voigt_step +
-                 "\" is the 2D membrane's (the 3D membrane's viscosity is the standard linear solid)",
-             "\"approximate_mobility\" in 3D");
-    // Relaxation rates of the fluid (solver/lbm/relaxation.hpp): the text's MRT, or TRT with the
-    // odd moments at Lambda = 3/16, which keeps a viscosity contrast independent of tau. 3D only:
-    // the text's D2Q9 rates are a TRT already (q by (9) is Lambda = 1/12 at every s_nu).
-    s.collision = q.choice("collision", std::string(s.dim == 3 && !v5 ? "trt" : "mrt"), {"mrt", "trt"});
-    if (s.dim == 2 && s.collision != "mrt")
-      q.fail("collision", "the 2D rates (9) are a two-relaxation-time collision already (Lambda = 1/12)", "\"mrt\" in 2D");
-    q.refuse_unknown();
+  if (s.marker_inset_rule == stresslet) {
+    const std::string delta = choice_name(s.delta);
+    const auto gap = s.dim == 3 ? ib::stresslet_radius_gap(s.delta) : ib::stresslet_radius_gap_2d(s.delta);
+    if (!gap)
+      q.fail("marker_inset", std::string("the stresslet's inset is measured for the kernels ") +
+                                 (s.dim == 3 ? "peskin4, roma3 and keys4" : "peskin4") + " in " + std::to_string(s.dim) +
+                                 "D, not \"" + delta + "\"",
+             "a number in [0, 2] with kernel \"" + delta + "\"");
+    s.marker_inset = ib::stresslet_marker_inset(*gap, s.a);
+    if (!(s.marker_inset >= 0.0))
+      q.fail("marker_inset", "the stresslet's inset has no solution at a = " + std::to_string(s.a) + " with kernel " + delta,
+             "a >= " + std::to_string(ib::stresslet_inset_min_radius(*gap)) + ", or a number in [0, 2]");
   }
+  if (s.marker_inset > 0.25 * s.a)
+    q.fail("marker_inset", "marker inset " + std::to_string(s.marker_inset) + " is more than a quarter of a", "[0, a/4]");
+}
+
+// resolution: the 2D Kelvin-Voigt step (31) and the 3D fluid's relaxation rates.
+void read_viscous_steps(ObjectReader& q, Scene& s, const SceneDefaults& defaults) {
+  using enum KelvinVoigtStep;
+  // exact_mobility by default in 2D (physics version 6): stable at any eta, and the eta <= 12
+  // members move by less than 0.5 % (docs/findings/kelvin_voigt_2d.md).
+  s.kelvin_voigt_step = q.choice<KelvinVoigtStep>("kelvin_voigt_step", defaults.kelvin_voigt_step,
+                                                  {approximate_mobility, exact_mobility});
+  if (s.dim == 3 && s.kelvin_voigt_step != approximate_mobility)
+    q.fail("kelvin_voigt_step",
+           "Kelvin-Voigt step \"" + choice_name(s.kelvin_voigt_step) +
+               "\" is the 2D membrane's (the 3D membrane's viscosity is the standard linear solid)",
+           "\"approximate_mobility\" in 3D");
+  // The text's MRT, or TRT with the odd moments at Lambda = 3/16, which keeps a viscosity
+  // contrast independent of tau. 3D only: the text's D2Q9 rates are a TRT already (q by (9) is
+  // Lambda = 1/12 at every s_nu).
+  using enum lbm::CollisionModel;
+  s.collision = q.choice<lbm::CollisionModel>("collision", defaults.collision, {mrt, trt});
+  if (s.dim == 2 && s.collision != mrt)
+    q.fail("collision", "the 2D rates (9) are a two-relaxation-time collision already (Lambda = 1/12)", "\"mrt\" in 2D");
+}
+
+void read_resolution(ObjectReader& r, Scene& s, const SceneDefaults& defaults) {
+  json res = r.object("resolution", false);
+  ObjectReader q(res, r.source(), r.child_path("resolution"),
+                 {"a", "domain", "segments", "mesh_level", "tau", "kernel", "precision", "membrane_update",
+                  "marker_inset", "kelvin_voigt_step", "collision"});
+  read_lattice(q, res, s, defaults);
+  read_delta_and_update(q, s, defaults);
+  read_marker_inset(q, res, s, defaults);
+  read_viscous_steps(q, s, defaults);
+  q.refuse_unknown();
+}
+
+void read_protocol_and_output(ObjectReader& r, Scene& s) {
+  const std::string& source = r.source();
   {
     json proto = r.object("protocol", true);
     ObjectReader p(proto, source, "protocol", {"shear", "recover"});
@@ -385,14 +418,28 @@ Scene Scene::from_json(const json& j, const std::string& source) {
     s.recover = read_phase(p.object("recover", true), source, "protocol.recover", false);
     p.refuse_unknown();
   }
-  {
-    json out = r.object("output", false);
-    ObjectReader o(out, source, "output", {"interval_kt", "shapes_at_kt", "snapshots"});
-    s.output_interval_kt = o.number("interval_kt", 0.05, 0.0, 10.0, true);
-    s.shapes_at_kt = o.numbers("shapes_at_kt", {}, 0.0, 1e5, 0, 10000);
-    s.snapshots = o.choice("snapshots", std::string("none"), {"none", "vtk"});
-    o.refuse_unknown();
-  }
+  json out = r.object("output", false);
+  ObjectReader o(out, source, "output", {"interval_kt", "shapes_at_kt", "snapshots"});
+  s.output_interval_kt = o.number("interval_kt", 0.05, 0.0, 10.0, true);
+  s.shapes_at_kt = o.numbers("shapes_at_kt", {}, 0.0, 1e5, 0, 10000);
+  s.snapshots = o.choice<Snapshots>("snapshots", Snapshots::none, {Snapshots::none, Snapshots::vtk});
+  o.refuse_unknown();
+}
+
+}  // namespace
+
+Scene Scene::from_json(const json& j, const std::string& source) {
+  ObjectReader r(j, source, "",
+                 {"dim", "physics_version", "shape", "law", "C", "Re", "Ca", "E_b", "V", "eta", "G", "c0",
+                  "reference_case", "volume_penalty", "power_law", "conventions", "resolution", "protocol", "output"});
+  Scene s;
+  read_dim_and_version(r, j, s);
+  const SceneDefaults defaults = scene_defaults(s.physics_version, s.dim);
+  read_capsule(r, s);
+  read_power_law(r, s, defaults);
+  read_conventions(r, s);
+  read_resolution(r, s, defaults);
+  read_protocol_and_output(r, s);
   r.refuse_unknown();
   ignore_other_dimension(s);
   return s;
@@ -419,7 +466,7 @@ Scene Scene::load(const std::string& path) {
 
 namespace {
 json phase_json(const PhaseSpec& p, bool shear) {
-  json j = {{"until", p.until}, {"kt", p.kt}, {"value", p.value}, {"tolerance", p.tolerance},
+  json j = {{"until", choice_name(p.until)}, {"kt", p.kt}, {"value", p.value}, {"tolerance", p.tolerance},
             {"window_kt", p.window_kt}, {"max_kt", p.max_kt}};
   if (shear) j["oscillatory_period_kt"] = p.oscillatory_period_kt;
   else j["window_fraction"] = p.window_fraction;
@@ -432,8 +479,8 @@ json phase_json(const PhaseSpec& p, bool shear) {
 json Scene::to_json() const {
   json j;
   j["dim"] = dim;
-  j["shape"] = shape;
-  j["law"] = law;
+  j["shape"] = choice_name(shape);
+  j["law"] = choice_name(law);
   j["C"] = C;
   j["Re"] = Re;
   j["Ca"] = Ca;
@@ -442,39 +489,41 @@ json Scene::to_json() const {
   j["eta"] = eta;
   j["G"] = G;
   j["c0"] = c0;
-  j["reference_case"] = reference_case;
+  j["reference_case"] = choice_name(reference_case);
   j["volume_penalty"] = volume_penalty;
-  if (physics_version == "5") {
+  if (physics_version == PhysicsVersion::v5) {
     // Version 5's canonical text, key for key: a key it did not know, or that held its
     // default, is left out, so the ids of its members stay (omitted_defaults()).
     j["power_law"] = {{"K", power_law_K}, {"n", power_law_n}};
-    if (power_law_model != "fluid_shell") j["power_law"]["model"] = power_law_model;
-    j["conventions"] = {{"sls_viscosity", sls_viscosity}, {"E_b_2d", E_b_2d}};
-    if (biconcave_2d != "equivalent") j["conventions"]["biconcave_2d"] = biconcave_2d;
+    if (power_law_model != PowerLawModel::fluid_shell) j["power_law"]["model"] = choice_name(power_law_model);
+    j["conventions"] = {{"sls_viscosity", choice_name(sls_viscosity)}, {"E_b_2d", choice_name(E_b_2d)}};
+    if (biconcave_2d != BiconcaveSize2d::equivalent) j["conventions"]["biconcave_2d"] = choice_name(biconcave_2d);
     j["resolution"] = {{"a", a}, {"domain", domain}, {"segments", segments},
-                       {"mesh_level", mesh_level}, {"tau", tau}, {"kernel", kernel}};
-    if (dim == 3 || precision != "double") j["resolution"]["precision"] = precision;
-    if (membrane_update != "euler") j["resolution"]["membrane_update"] = membrane_update;
-    if (!marker_inset_rule.empty()) j["resolution"]["marker_inset"] = marker_inset_rule;
+                       {"mesh_level", mesh_level}, {"tau", tau}, {"kernel", choice_name(delta)}};
+    if (dim == 3 || precision != lbm::Precision::double_precision) j["resolution"]["precision"] = choice_name(precision);
+    if (membrane_update != ib::MembraneUpdate::euler) j["resolution"]["membrane_update"] = choice_name(membrane_update);
+    if (marker_inset_rule != MarkerInsetRule::given) j["resolution"]["marker_inset"] = choice_name(marker_inset_rule);
     else if (marker_inset != 0.0) j["resolution"]["marker_inset"] = marker_inset;
-    if (kelvin_voigt_step != "approximate_mobility") j["resolution"]["kelvin_voigt_step"] = kelvin_voigt_step;
-    if (collision != "mrt") j["resolution"]["collision"] = collision;
+    if (kelvin_voigt_step != KelvinVoigtStep::approximate_mobility)
+      j["resolution"]["kelvin_voigt_step"] = choice_name(kelvin_voigt_step);
+    if (collision != lbm::CollisionModel::mrt) j["resolution"]["collision"] = choice_name(collision);
   } else {
     // Every key: a key's default may change with the physics version, and the id must say
     // what ran.
-    j["power_law"] = {{"K", power_law_K}, {"n", power_law_n}, {"model", power_law_model}};
-    j["conventions"] = {{"sls_viscosity", sls_viscosity}, {"E_b_2d", E_b_2d}, {"biconcave_2d", biconcave_2d}};
+    j["power_law"] = {{"K", power_law_K}, {"n", power_law_n}, {"model", choice_name(power_law_model)}};
+    j["conventions"] = {{"sls_viscosity", choice_name(sls_viscosity)}, {"E_b_2d", choice_name(E_b_2d)},
+                        {"biconcave_2d", choice_name(biconcave_2d)}};
     j["resolution"] = {{"a", a}, {"domain", domain}, {"segments", segments},
-                       {"mesh_level", mesh_level}, {"tau", tau}, {"kernel", kernel},
-                       {"precision", precision}, {"membrane_update", membrane_update},
-                       {"kelvin_voigt_step", kelvin_voigt_step}, {"collision", collision}};
-    // The rule's name where a rule set it (its value follows from a and the kernel), else the number.
-    if (marker_inset_rule.empty()) j["resolution"]["marker_inset"] = marker_inset;
-    else j["resolution"]["marker_inset"] = marker_inset_rule;
+                       {"mesh_level", mesh_level}, {"tau", tau}, {"kernel", choice_name(delta)},
+                       {"precision", choice_name(precision)}, {"membrane_update", choice_name(membrane_update)},
+                       {"kelvin_voigt_step", choice_name(kelvin_voigt_step)}, {"collision", choice_name(collision)}};
+    // The rule's name where a rule set it (its value follows from a and the delta), else the number.
+    if (marker_inset_rule == MarkerInsetRule::given) j["resolution"]["marker_inset"] = marker_inset;
+    else j["resolution"]["marker_inset"] = choice_name(marker_inset_rule);
   }
   j["protocol"] = {{"shear", phase_json(shear, true)}, {"recover", phase_json(recover, false)}};
   j["output"] = {{"interval_kt", output_interval_kt}, {"shapes_at_kt", shapes_at_kt},
-                 {"snapshots", snapshots}};
+                 {"snapshots", choice_name(snapshots)}};
   // Doubles that happen to be integral must still be written as doubles so that
   // "a": 10 and "a": 10.0 give the same canonical text.
   std::function<void(json&)> as_float = [&](json& v) {
@@ -488,24 +537,24 @@ json Scene::to_json() const {
   j["resolution"]["mesh_level"] = mesh_level;
   // The member id hashes the scene without this key and with the version after it
   // (study/campaign/member_id.cpp); it is here so that the solver runs what study planned.
-  j["physics_version"] = physics_version;
+  j["physics_version"] = choice_name(physics_version);
   return j;
 }
 
 const std::map<std::string, json>& Scene::omitted_defaults(int dim) {
-  static const std::map<std::string, json> d2 = {{"power_law.model", "fluid_shell"},
-                                                 {"conventions.biconcave_2d", "equivalent"},
-                                                 {"resolution.membrane_update", "euler"},
-                                                 {"resolution.precision", "double"},
-                                                 {"resolution.marker_inset", 0.0},
-                                                 {"resolution.kelvin_voigt_step", "approximate_mobility"},
-                                                 {"resolution.collision", "mrt"}};
-  static const std::map<std::string, json> d3 = {{"power_law.model", "fluid_shell"},
-                                                 {"conventions.biconcave_2d", "equivalent"},
-                                                 {"resolution.membrane_update", "euler"},
-                                                 {"resolution.marker_inset", 0.0},
-                                                 {"resolution.kelvin_voigt_step", "approximate_mobility"},
-                                                 {"resolution.collision", "mrt"}};
+  // Version 5's defaults of the keys its canonical text left out while they held them.
+  const auto table = [](int d) {
+    const SceneDefaults v5 = scene_defaults(PhysicsVersion::v5, d);
+    std::map<std::string, json> m = {{"power_law.model", choice_name(v5.power_law_model)},
+                                     {"conventions.biconcave_2d", choice_name(BiconcaveSize2d::equivalent)},
+                                     {"resolution.membrane_update", choice_name(ib::MembraneUpdate::euler)},
+                                     {"resolution.marker_inset", 0.0},
+                                     {"resolution.kelvin_voigt_step", choice_name(v5.kelvin_voigt_step)},
+                                     {"resolution.collision", choice_name(v5.collision)}};
+    if (d == 2) m["resolution.precision"] = choice_name(v5.precision);  // always written in 3D
+    return m;
+  };
+  static const std::map<std::string, json> d2 = table(2), d3 = table(3);
   return dim == 2 ? d2 : d3;
 }
 

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "solver/ib/membrane_update.hpp"
+#include "solver/scene/choices.hpp"
 #include "solver/scene/version.hpp"
 
 namespace capsule {
@@ -16,31 +18,32 @@ struct SceneError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// One phase of the protocol. Shear: until "time" (kt), "steady" (D_xy range over the last
-// window_kt below tolerance), "theta" (inclination reaches value, rad, from above: tumbling,
-// Sec. 4.1.2), "beta" (phase angle of the tracked element reaches value: tank-treading,
-// Sec. 4.1.1), counted from after_kt on. Recover: until "time" (kt) or "settled" (as "steady").
+// One phase of the protocol. Shear: until time (kt), steady (D_xy range over the last
+// window_kt below tolerance), theta (inclination reaches value, rad, from above: tumbling,
+// Sec. 4.1.2), beta (phase angle of the tracked element reaches value: tank-treading,
+// Sec. 4.1.1), counted from after_kt on. Recover: until time (kt) or settled (as steady).
 // max_kt caps the phase.
 struct PhaseSpec {
-  std::string until;
-  double kt = 0;            // duration for until == "time"
-  double value = 0;         // threshold for "theta" / "beta"
+  StopCondition until = StopCondition::time;
+  double kt = 0;            // duration for until time
+  double value = 0;         // threshold for theta / beta
   double tolerance = 1e-3;  // absolute range of D_xy over window_kt for "steady" / "settled"
   double window_kt = 2.0;
   double max_kt = 50.0;
-  // recover only, "settled": the window is max(window_kt, window_fraction x the time since the
+  // recover only, settled: the window is max(window_kt, window_fraction x the time since the
   // stop), so a slow, non-monotone recovery is not taken as settled at a turning point.
   double window_fraction = 0.5;
   double oscillatory_period_kt = 0;  // shear only: > 0 -> wall speed (H/2) k sin(pi t / T) (Sec. 5.2.2)
-  // shear only, "theta" / "beta": a crossing counts from this kt on, so the stop falls in the
+  // shear only, theta / beta: a crossing counts from this kt on, so the stop falls in the
   // steady tumbling or tank-treading the text stops in (Sec. 4.1), not in the start-up.
   double after_kt = 0;
 };
 
+// The in-class defaults are those of a 2D scene of this solver's physics (scene_defaults).
 struct Scene {
   int dim = 2;
-  std::string shape;           // 2D: circle | biconcave; 3D: sphere | biconcave
-  std::string law;             // 2D: hooke; 3D: neo-hookean | skalak
+  Shape shape = Shape::circle;           // 2D: circle | biconcave; 3D: sphere | biconcave
+  MembraneLaw law = MembraneLaw::hooke;  // 2D: hooke; 3D: neo-hookean | skalak
   double C = 15;               // Skalak area-dilation constant (60)-(61)
   double Re = 0.05;            // Re = k a^2 / nu
   double Ca = 0;               // (34)
@@ -49,16 +52,16 @@ struct Scene {
   double eta = 0;              // (36)
   double G = 50;               // E_m / E_s, standard linear solid (63)-(67)
   double c0 = 0;               // spontaneous curvature, units of 1/a
-  std::string reference_case = "none";  // 3D: none | A | B | C (Table 1)
+  ReferenceCase reference_case = ReferenceCase::none;  // 3D: none | A | B | C (Table 1)
   double volume_penalty = 0;   // K_v of (84), in units of E_s / a; 0 = off
   double power_law_K = 0;      // (102), dimensionless (gamma in units of k); 0 = off
   double power_law_n = 1;
-  // Where the power-law viscosity acts (3D): "fluid_shell": the text's (103)-(104), spread over
-  // the kernel's four lattice spacings and added to the fluid viscosity there (its shell is
-  // four lattice spacings thick whatever a, so it moves with the lattice); "membrane": a
+  // Where the power-law viscosity acts (3D): fluid_shell: the text's (103)-(104), spread over
+  // the delta's four lattice spacings and added to the fluid viscosity there (its shell is
+  // four lattice spacings thick whatever a, so it moves with the lattice); membrane: a
   // surface viscosity in the membrane mechanics, the standard linear solid's Maxwell element
   // with mu_s(gamma) per triangle (solver/membrane3d/elasticity.hpp), resolution-independent.
-  std::string power_law_model = "fluid_shell";
+  PowerLawModel power_law_model = scene_defaults(PhysicsVersion::current, 2).power_law_model;
   // Readings of the dissertation that differ from the physical definitions (docs/conventions.md
   // "Conventions"); the physical ones are the default, the text's are there so its tables
   // can be regenerated and the difference explained.
@@ -72,44 +75,45 @@ struct Scene {
   //    "dissertation": (24)-(25) drawn with the printed a, which encloses the area of a circle
   //    of radius 0.740 a (the "characteristic length 1.48a" of Sec. 2.4 is its diameter).
   //    Ca, E_b, Re and the lattice keep the printed a in both.
-  std::string sls_viscosity = "physical";
-  std::string E_b_2d = "dimensionless";
-  std::string biconcave_2d = "equivalent";
-  // The physics the scene runs (solver/scene/version.hpp): this solver's, or "5", whose defaults
-  // (peskin4 and markers on a, mrt, the power law as a fluid shell, the approximate 2D
-  // Kelvin-Voigt step) and canonical text keep a campaign run before version 6 as it was.
-  std::string physics_version = capsule::physics_version;
+  SlsViscosity sls_viscosity = SlsViscosity::physical;
+  BendingConvention2d E_b_2d = BendingConvention2d::dimensionless;
+  BiconcaveSize2d biconcave_2d = BiconcaveSize2d::equivalent;
+  // The physics the scene runs (solver/scene/version.hpp): this solver's, or version 5, whose
+  // defaults (scene_defaults) and canonical text keep a campaign run before version 6 as it was.
+  PhysicsVersion physics_version = PhysicsVersion::current;
   double a = 10;               // capsule (equivalent) radius in lattice nodes
-  std::vector<double> domain;  // in units of a: 2D {16, 12}, 3D {10, 10, 8}
+  std::vector<double> domain = scene_defaults(PhysicsVersion::current, 2).domain;  // in units of a
   int segments = 140;          // 2D membrane segments
   int mesh_level = 4;          // 3D icosahedron subdivisions (4 -> 2562 vertices)
   double tau = 0;              // relaxation time; 0 = chosen by the solver
-  std::string kernel = "peskin4";  // IB delta (solver/ib/delta.hpp): peskin4, roma3, linear2, cosine (3D default roma3)
-  std::string precision = "double";  // fluid populations: double | single (solver/lbm/precision.hpp)
-  // 3D position update (20): euler | previous_velocity | adams_bashforth2 (solver/ib/membrane_update.hpp)
-  std::string membrane_update = "euler";
+  // The IB delta (scene key resolution.kernel; solver/ib/delta.hpp).
+  ib::Delta delta = scene_defaults(PhysicsVersion::current, 2).delta;
+  // The fluid's populations (solver/lbm/precision.hpp).
+  lbm::Precision precision = scene_defaults(PhysicsVersion::current, 2).precision;
+  // 3D position update (20) (solver/ib/membrane_update.hpp).
+  ib::MembraneUpdate membrane_update = ib::MembraneUpdate::euler;
   // 3D: the markers (and the reference shape) sit this many lattice units inside the radius a,
   // the moduli unchanged (simulation3d.cpp "Marker inset"), so that the smeared shell, whose
   // hydrodynamic radius is larger than its markers', acts as the radius a. marker_inset_rule
-  // "stresslet" (the 3D default) computes it from a and the kernel (solver/ib/hydrodynamic_radius.hpp);
-  // empty when the scene gave a number (0: markers on the radius a).
+  // stresslet (the 3D default) computes it from a and the delta (solver/ib/hydrodynamic_radius.hpp);
+  // given when the scene gave a number (0: markers on the radius a).
   double marker_inset = 0;
-  std::string marker_inset_rule;
-  // 2D implicit Kelvin-Voigt step (31) (solver/membrane2d/membrane.hpp): "approximate_mobility"
+  MarkerInsetRule marker_inset_rule = scene_defaults(PhysicsVersion::current, 2).marker_inset_rule;
+  // 2D implicit Kelvin-Voigt step (31) (solver/membrane2d/membrane.hpp): approximate_mobility
   // predicts the node velocities with the scalar self-mobility 2 (3/8)^2 and the last step's
-  // velocity (stable up to eta ~ 20 at a = 10); "exact_mobility" solves with the immersed
+  // velocity (stable up to eta ~ 20 at a = 10); exact_mobility solves with the immersed
   // boundary's real same-step mobility and force-free velocity (solver/ib/mobility.hpp).
-  std::string kelvin_voigt_step = "approximate_mobility";
-  // 3D relaxation rates of the fluid (solver/lbm/relaxation.hpp): "mrt", the text's rates (the
-  // odd moments' Lambda grows as (3 nu)^2 with a node's viscosity), or "trt", two relaxation
+  KelvinVoigtStep kelvin_voigt_step = scene_defaults(PhysicsVersion::current, 2).kelvin_voigt_step;
+  // 3D relaxation rates of the fluid (solver/lbm/relaxation.hpp): mrt, the text's rates (the
+  // odd moments' Lambda grows as (3 nu)^2 with a node's viscosity), or trt, two relaxation
   // times with the odd moments at Lambda = 3/16 at every node (a viscosity contrast then no
-  // longer moves with tau: docs/findings/accuracy_and_stability.md). 2D: "mrt" only (a TRT already).
-  std::string collision = "mrt";
+  // longer moves with tau: docs/findings/accuracy_and_stability.md). 2D: mrt only (a TRT already).
+  lbm::CollisionModel collision = scene_defaults(PhysicsVersion::current, 2).collision;
   PhaseSpec shear;
   PhaseSpec recover;
   double output_interval_kt = 0.05;
   std::vector<double> shapes_at_kt;
-  std::string snapshots = "none";  // none | vtk
+  Snapshots snapshots = Snapshots::none;
 
   // Parses and validates; throws SceneError naming source_name, the key and the allowed range.
   static Scene from_json(const nlohmann::json& j, const std::string& source_name);
@@ -123,8 +127,6 @@ struct Scene {
   // that dim. Member files of older physics are read with it (analysis/report/scene_parameter.cpp).
   static const std::map<std::string, nlohmann::json>& omitted_defaults(int dim);
 
-  // The precision a scene that does not name one gets: "single" in 3D, "double" in 2D.
-  static std::string default_precision(int dim) { return dim == 3 ? "single" : "double"; }
 
   // Lattice size (nx, ny, nz) from a and the domain (nz = 1 in 2D).
   std::vector<int> grid() const;

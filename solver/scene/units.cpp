@@ -65,15 +65,12 @@ double choose_tau_2d(const Scene& scene) {
 //    +0.07 at M 0.22) until the membrane folds after 20-35 kt, while M 0.20 and 0.15 decay and
 //    0.15 decays at levels 3-5, at a = 7 and over a 50 kt recovery; Peskin's kernel decays at
 //    0.4 (levels 3 and 4). docs/findings/accuracy_and_stability.md "A slow instability at rest".
-//    So M_max = 0.4 for peskin4 and 0.15 for the other kernels (roma3 measured; linear2 and
+//    So M_max = 0.4 for peskin4 and 0.15 for the other deltas (roma3 measured; linear2 and
 //    cosine not, so they take the stricter bound).
-//  The tau = 2 blow-up the first 3D driver saw (a = 5, Ca = 0.1, NaN at kt = 0.7) was measured
-//  in the session of the energy-square rate fix (physics version 2), which removed an
-//  instability at rest above tau ~ 1.5 in D3Q19; today tau = 2 runs that scene to kt 3.
 double choose_tau_3d(const Scene& scene) {
   constexpr double nu_accurate = 1.0 / 3.0, nu_contrast = 1.0 / 6.0, S_max = 0.17, B_max = 0.17, tau_min = 0.52;
   const double M_max = maxwell_stiffness_bound(scene);
-  double nu = (scene.V > 1.0 && scene.collision != "trt") ? nu_contrast : nu_accurate;
+  double nu = (scene.V > 1.0 && scene.collision != lbm::CollisionModel::trt) ? nu_contrast : nu_accurate;
   nu = std::min(nu, S_max * scene.a * scene.Ca / scene.Re);
   if (scene.E_b > 0) nu = std::min(nu, B_max * scene.Ca / (scene.E_b * scene.a * scene.Re));
   // The Maxwell element's stiffness number M grows with nu (E_m ~ nu^2): lowered by bisection
@@ -91,20 +88,29 @@ double choose_tau_3d(const Scene& scene) {
 }
 }  // namespace
 
+membrane3d::ElasticLaw elastic_law_3d(MembraneLaw law) {
+  switch (law) {
+    case MembraneLaw::neo_hookean: return membrane3d::ElasticLaw::neo_hookean;
+    case MembraneLaw::skalak: return membrane3d::ElasticLaw::skalak;
+    case MembraneLaw::hooke: break;
+  }
+  throw std::invalid_argument("the law hooke is the 2D membrane's, not a 3D one");
+}
+
 double shear_modulus_3d(const Scene& s, const Units& u) {
-  return membrane3d::law_modulus(membrane3d::elastic_law_from_name(s.law), u.E_s);
+  return membrane3d::law_modulus(elastic_law_3d(s.law), u.E_s);
 }
 
 MaxwellElement3d maxwell_element_3d(const Scene& s, const Units& u) {
   MaxwellElement3d m;
-  const bool power_law_membrane = s.power_law_K > 0 && s.power_law_model == "membrane";
+  const bool power_law_membrane = s.power_law_K > 0 && s.power_law_model == PowerLawModel::membrane;
   if (s.dim != 3 || !(s.eta > 0 || power_law_membrane)) return m;
   m.present = true;
   m.power_law = power_law_membrane;
   m.E_m = s.G * shear_modulus_3d(s, u);
   // rho = 1, so mu_a = nu; u.mu_s = eta a mu_a (36).
   const double mu = power_law_membrane ? s.power_law_K * s.a * u.nu
-                                       : (s.sls_viscosity == "dissertation" ? u.mu_s / 3.0 : u.mu_s);
+                                       : (s.sls_viscosity == SlsViscosity::dissertation ? u.mu_s / 3.0 : u.mu_s);
   m.tau_m = mu / m.E_m;
   return m;
 }
@@ -117,12 +123,12 @@ double maxwell_stiffness_number(const Scene& s, double tau) {
   return m.E_m * m.tau_m * (1.0 - std::exp(-1.0 / m.tau_m)) / u.nu;
 }
 
-double maxwell_stiffness_bound(const Scene& s) { return s.kernel == "peskin4" ? 0.4 : 0.15; }
+double maxwell_stiffness_bound(const Scene& s) { return ib::maxwell_stiffness_bound(s.delta); }
 
 double dimensionless_E_b(const Scene& s) {
   // The text's 2D reading (Scene::E_b_2d): E_B = E_b a_text E_s with a_text = 0.5 in its units
   // of h = 0.05 (Sec. 2.4), so E_B / (a^2 E_s) = E_b / a_text = 2 E_b.
-  if (s.dim == 2 && s.E_b_2d == "dissertation") return 2.0 * s.E_b;
+  if (s.dim == 2 && s.E_b_2d == BendingConvention2d::dissertation) return 2.0 * s.E_b;
   return s.E_b;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 // From dimensionless groups to lattice units (dx = dt = rho = 1), CONTRACTS.md.
+#include "solver/membrane3d/constitutive_law.hpp"
 #include "solver/scene/scene.hpp"
 
 namespace capsule {
@@ -37,6 +38,9 @@ Units units_for(const Scene& scene, double tau);
 // Bagchi).
 double shear_modulus_3d(const Scene& scene, const Units& units);
 
+// The 3D membrane's law of a 3D scene's law; std::invalid_argument for the 2D law hooke.
+membrane3d::ElasticLaw elastic_law_3d(MembraneLaw law);
+
 // The Maxwell element of a 3D membrane in lattice units: the standard linear solid (63)-(67)
 // when eta > 0, or the power law in the membrane (power_law.model "membrane"; the scene refuses
 // both at once). E_m = G G_s; tau_m = mu / E_m in steps, mu the element's surface viscosity: the
@@ -59,9 +63,8 @@ MaxwellElement3d maxwell_element_3d(const Scene& scene, const Units& units);
 // 0 without a Maxwell element.
 double maxwell_stiffness_number(const Scene& scene, double tau);
 
-// The largest maxwell_stiffness_number the relaxation-time rule allows with the scene's kernel:
-// 0.4 with Peskin's, 0.15 with the others (a slow instability at rest above about 0.2 with
-// Roma's; docs/guide/model.md "Relaxation time").
+// The largest maxwell_stiffness_number the relaxation-time rule allows with the scene's delta
+// (ib::maxwell_stiffness_bound; docs/guide/model.md "Relaxation time").
 double maxwell_stiffness_bound(const Scene& scene);
 
 // The relaxation time the solver runs a scene with: the scene's tau, or when it is 0 the

@@ -48,8 +48,8 @@ double d3q19_rate(double nodes, bool single) {
 }
 
 double expected_phase_kt(const PhaseSpec& p, bool recovery) {
-  if (p.until == "time") return p.kt;
-  if (p.until == "steady" || p.until == "settled")
+  if (p.until == StopCondition::time) return p.kt;
+  if (p.until == StopCondition::steady || p.until == StopCondition::settled)
     return std::min(p.max_kt, p.window_kt + (recovery ? 2.6 : 1.6));
   return p.max_kt;  // theta / beta stops: no prior; the cap
 }
@@ -68,7 +68,7 @@ CostEstimate estimate_cost(const nlohmann::json& canonical_scene, const PhaseLen
   c.nodes = 1;
   for (int n : scene.grid()) c.nodes *= n;
   const auto phase_span = [&c](const PhaseSpec& p) {
-    if (p.until == "time") return p.kt;
+    if (p.until == StopCondition::time) return p.kt;
     c.kt_is_bound = true;
     return p.max_kt;
   };
@@ -80,7 +80,7 @@ CostEstimate estimate_cost(const nlohmann::json& canonical_scene, const PhaseLen
       if (const auto kt = lengths->expected_kt(canonical_scene, recovery)) return *kt;
     return expected_phase_kt(p, recovery);
   };
-  const bool no_recovery = scene.recover.until == "time" && scene.recover.kt <= 0;
+  const bool no_recovery = scene.recover.until == StopCondition::time && scene.recover.kt <= 0;
   c.expected_kt = expected(scene.shear, false) + (no_recovery ? 0.0 : expected(scene.recover, true));
   c.steps_per_kt = units_for(scene, choose_tau(scene)).steps_per_kt;  // the tau the solver will run
   const double nodes = static_cast<double>(c.nodes);
@@ -89,12 +89,12 @@ CostEstimate estimate_cost(const nlohmann::json& canonical_scene, const PhaseLen
     c.membrane_seconds_per_step = scene.segments * (k2DPerSegment + (scene.V != 1.0 ? k2DContrastPerSegment : 0.0) +
                                                     (scene.eta > 0 ? k2DKelvinVoigtPerSegment : 0.0));
   } else {
-    c.fluid_seconds_per_step = nodes / d3q19_rate(nodes, scene.precision == "single");
+    c.fluid_seconds_per_step = nodes / d3q19_rate(nodes, scene.precision == lbm::Precision::single_precision);
     c.membrane_thread_efficiency = k3DMembraneThreadEfficiency;
     const double vertices = 10.0 * std::pow(4.0, scene.mesh_level) + 2.0;
-    const double support = scene.kernel == "linear2" ? 8.0 : scene.kernel == "roma3" ? 27.0 : 64.0;
+    const double support = ib::delta_support_nodes(scene.delta, 3);
     double per_vertex = k3DCouplingPerVertex * support / 64.0 + k3DElasticPerVertex;
-    const bool membrane_power_law = scene.power_law_K > 0 && scene.power_law_model == "membrane";
+    const bool membrane_power_law = scene.power_law_K > 0 && scene.power_law_model == PowerLawModel::membrane;
     if (scene.eta > 0 || membrane_power_law) per_vertex += k3DSlsPerVertex;  // the power law's own SLS step (not measured apart)
     if (scene.E_b > 0 || scene.volume_penalty > 0) per_vertex += k3DCurvaturePerVertex;
     if (scene.power_law_K > 0 && !membrane_power_law) per_vertex += k3DPowerLawPerVertex;

@@ -5,6 +5,7 @@
 
 #include "solver/io/member_file.hpp"
 #include "study/plan/shipped_phase_lengths.hpp"
+#include "solver/scene/choices.hpp"
 
 namespace capsule::study {
 
@@ -152,8 +153,8 @@ std::optional<double> PhaseLengths::expected_kt(const nlohmann::json& scene, boo
   const char* phase = recovery ? "recover" : "shear";
   const nlohmann::json::json_pointer p(std::string("/protocol/") + phase);
   if (!scene.contains(p)) return std::nullopt;
-  const std::string until = scene.at(p).value("until", "");
-  if (until != "steady" && until != "settled") return std::nullopt;
+  const auto until = choice_from_name<StopCondition>(scene.at(p).value("until", ""));
+  if (until != StopCondition::steady && until != StopCondition::settled) return std::nullopt;
   const Physics target = physics_of(scene);
   const int k = recovery ? 1 : 0;
   // A neighbour at another Ca: the part of its length past the steadiness window scaled by the

@@ -69,7 +69,9 @@ double physical_eta(const ShearMember& m) {
   const double eta = parameter(*m.member, "eta");
   if (!m.data->attributes.contains("scene")) return eta;
   const nlohmann::json* sls = scene_value_at(m.data->attributes["scene"], "conventions.sls_viscosity");
-  return sls && *sls == "dissertation" ? eta / 3.0 : eta;  // absent: the scene's default, physical
+  const bool dissertation = sls && sls->is_string() &&
+                            choice_from_name<SlsViscosity>(sls->get<std::string>()) == SlsViscosity::dissertation;
+  return dissertation ? eta / 3.0 : eta;  // absent: the scene's default, physical
 }
 
 // How a judged member's value moved from the next coarser level of its resolution ladder.

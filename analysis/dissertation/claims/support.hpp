@@ -19,6 +19,7 @@
 #include "analysis/dissertation/table2_compare.hpp"
 #include "analysis/dissertation/claim_texts.hpp"
 #include "analysis/dissertation/claims.hpp"
+#include "solver/scene/choices.hpp"
 
 namespace capsule::analysis::claims {
 
@@ -252,7 +253,8 @@ inline std::optional<ShearStop> shear_stop(const DissertationResults& res, const
 // when the shear ends otherwise, or when the member file is not there to tell (its fits.json
 // entry is judged as recorded).
 inline std::string missed_stop(const ShearStop& s) {
-  if (s.until != "theta" && s.until != "beta") return "";
+  const auto until = choice_from_name<StopCondition>(s.until);
+  if (until != StopCondition::theta && until != StopCondition::beta) return "";
   const std::string target = s.until + " = " + num(s.value);
   if (std::isnan(s.t_stop)) return "the shear never stopped (no t_stop); it was to stop at " + target;
   // The shear's last row lies within a step of its cap.
@@ -272,7 +274,7 @@ inline std::string outside_tumbling_ensemble(const DissertationResults& res, con
   const auto s = shear_stop(res, m);  // the member file is read once for both checks
   if (!s) return "";
   if (std::string why = missed_stop(*s); !why.empty()) return why;
-  if (s->until == "theta" && std::abs(s->value + std::numbers::pi / 3) > 1e-6)
+  if (choice_from_name<StopCondition>(s->until) == StopCondition::theta && std::abs(s->value + std::numbers::pi / 3) > 1e-6)
     return "stopped at theta = " + num(s->value) + ", not the ensemble's -pi/3 (reported, not counted)";
   return "";
 }

@@ -64,6 +64,6 @@ TEST_CASE("reference capsule: bad parameters name themselves", "[boundary_integr
   p.Ca = -1;
   CHECK_THROWS_WITH(ShearedCapsule(p), Catch::Contains("Ca must be > 0"));
   p.Ca = 0.1;
-  p.law = "hooke";
-  CHECK_THROWS_WITH(ShearedCapsule(p), Catch::Contains("allowed: neo-hookean, skalak"));
+  p.level = 7;
+  CHECK_THROWS_WITH(ShearedCapsule(p), Catch::Contains("mesh level must be 1-6"));
 }

@@ -9,14 +9,14 @@
 using namespace capsule::ib;
 
 TEST_CASE("the stresslet's marker inset puts the shell's hydrodynamic radius on a", "[ib]") {
-  const auto roma3 = stresslet_radius_gap("roma3");
-  const auto peskin4 = stresslet_radius_gap("peskin4");
-  const auto keys4 = stresslet_radius_gap("keys4");
+  const auto roma3 = stresslet_radius_gap(Delta::roma3);
+  const auto peskin4 = stresslet_radius_gap(Delta::peskin4);
+  const auto keys4 = stresslet_radius_gap(Delta::keys4);
   REQUIRE(roma3);
   REQUIRE(peskin4);
   REQUIRE(keys4);
-  CHECK_FALSE(stresslet_radius_gap("cosine"));
-  CHECK_FALSE(stresslet_radius_gap("linear2"));
+  CHECK_FALSE(stresslet_radius_gap(Delta::cosine));
+  CHECK_FALSE(stresslet_radius_gap(Delta::linear2));
   for (double a : {3.0, 5.0, 7.0, 10.0, 14.0, 40.0}) {
     for (const auto& g : {*roma3, *peskin4, *keys4}) {
       const double inset = stresslet_marker_inset(g, a);

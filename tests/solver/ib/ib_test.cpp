@@ -199,7 +199,7 @@ TEST_CASE("Peskin 4-point kernel: unity, zero first moment, constant sum of squa
   std::uniform_real_distribution<double> u(-50.0, 50.0);
   for (int t = 0; t < 1000; ++t) {
     const double x = u(rng);
-    const DeltaStencil1D s = delta_stencil(x, Kernel::peskin4);
+    const DeltaStencil1D s = delta_stencil(x, Delta::peskin4);
     double sum = 0, m1 = 0, sq = 0;
     for (int m = 0; m < 4; ++m) {
       const double r = x - (s.first + m + 0.5);
@@ -232,14 +232,14 @@ TEST_CASE("Peskin kernel interpolates a linear field exactly and spreads conserv
     F[2 * c] = std::sin(c);
     F[2 * c + 1] = std::cos(3.0 * c);
   }
-  interpolate<2>(g, u, X.data(), 50, U.data(), Kernel::peskin4);
+  interpolate<2>(g, u, X.data(), 50, U.data(), Delta::peskin4);
   for (int c = 0; c < 50; ++c) {
     REQUIRE(U[2 * c] == Approx(0.3 + 0.01 * X[2 * c] - 0.02 * X[2 * c + 1]).margin(1e-14));  // rounding only
     REQUIRE(U[2 * c + 1] == Approx(-0.1 + 0.005 * X[2 * c + 1]).margin(1e-14));
   }
   std::vector<double> p0(g.size(), 0.0), p1(g.size(), 0.0);
   double* p[2] = {p0.data(), p1.data()};
-  spread<2>(g, X.data(), F.data(), 50, p, Kernel::peskin4);
+  spread<2>(g, X.data(), F.data(), 50, p, Delta::peskin4);
   double Fx = 0, Fy = 0, sx = 0, sy = 0, torque_nodes = 0, torque_grid = 0;
   for (int c = 0; c < 50; ++c) {
     Fx += F[2 * c];
@@ -297,32 +297,47 @@ TEST_CASE("narrow kernels roma3 and linear2: closed forms, unity, zero first mom
   // linear2 (hat): 2 nodes. Both interpolate linear fields exactly, like peskin4.
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-50.0, 50.0);
-  for (Kernel k : {Kernel::roma3, Kernel::linear2}) {
+  for (Delta k : {Delta::roma3, Delta::linear2}) {
     for (int t = 0; t < 1000; ++t) {
       const double x = u(rng);
       const DeltaStencil1D s = delta_stencil(x, k);
-      REQUIRE(s.width == kernel_width(k));
+      REQUIRE(s.width == delta_width(k));
       double sum = 0, m1 = 0, sq = 0;
       for (int m = 0; m < s.width; ++m) {
         const double r = x - (s.first + m + 0.5);
-        REQUIRE(s.w[m] == Approx(k == Kernel::roma3 ? roma3_delta(r) : linear2_delta(r)).margin(1e-14));
+        REQUIRE(s.w[m] == Approx(k == Delta::roma3 ? roma3_delta(r) : linear2_delta(r)).margin(1e-14));
         sum += s.w[m];
         m1 += s.w[m] * r;
         sq += s.w[m] * s.w[m];
       }
       // the nodes outside the stencil carry no weight of the closed form
-      REQUIRE((k == Kernel::roma3 ? roma3_delta(x - (s.first - 1 + 0.5)) : linear2_delta(x - (s.first - 1 + 0.5))) ==
+      REQUIRE((k == Delta::roma3 ? roma3_delta(x - (s.first - 1 + 0.5)) : linear2_delta(x - (s.first - 1 + 0.5))) ==
               Approx(0.0).margin(1e-14));
       REQUIRE(sum == Approx(1.0).margin(1e-14));  // rounding only
       REQUIRE(m1 == Approx(0.0).margin(1e-13));   // rounding only
-      if (k == Kernel::roma3) REQUIRE(sq == Approx(0.5).margin(1e-14));
+      if (k == Delta::roma3) REQUIRE(sq == Approx(0.5).margin(1e-14));
     }
   }
-  REQUIRE(kernel_from_name("roma3") == Kernel::roma3);
-  REQUIRE(kernel_from_name("linear2") == Kernel::linear2);
-  REQUIRE(kernel_from_name("peskin4") == Kernel::peskin4);
-  REQUIRE(kernel_from_name("cosine") == Kernel::cosine);
-  REQUIRE_THROWS_AS(kernel_from_name("gauss"), std::invalid_argument);  // no silent fallback
+}
+
+TEST_CASE("a delta's name, width, support and stiffness bound are asked of it", "[ib]") {
+  using capsule::choice_from_name;
+  using capsule::choice_name;
+  for (const auto& [delta, name] : delta_names) {
+    CHECK(choice_name(delta) == name);
+    CHECK(choice_from_name<Delta>(name) == delta);
+    CHECK(delta_support_nodes(delta, 3) == delta_width(delta) * delta_width(delta) * delta_width(delta));
+  }
+  CHECK(choice_from_name<Delta>("roma3") == Delta::roma3);
+  CHECK(choice_from_name<Delta>("keys4") == Delta::keys4);
+  CHECK_FALSE(choice_from_name<Delta>("gauss"));  // no silent fallback
+  CHECK_THROWS_WITH(capsule::choice_from_name_or_throw<Delta>("gauss", "IB delta"),
+                    Catch::Contains("allowed: peskin4, roma3, linear2, cosine, keys4"));
+  CHECK(delta_support_nodes(Delta::linear2, 3) == 8);
+  CHECK(delta_support_nodes(Delta::roma3, 3) == 27);
+  CHECK(delta_support_nodes(Delta::peskin4, 2) == 16);
+  CHECK(maxwell_stiffness_bound(Delta::peskin4) == 0.4);
+  CHECK(maxwell_stiffness_bound(Delta::roma3) == 0.15);
 }
 
 TEST_CASE("keys4: closed form, unity, zero first and second moments", "[ib]") {
@@ -332,7 +347,7 @@ TEST_CASE("keys4: closed form, unity, zero first and second moments", "[ib]") {
   std::uniform_real_distribution<double> u(-50.0, 50.0);
   for (int t = 0; t < 1000; ++t) {
     const double x = u(rng);
-    const DeltaStencil1D s = delta_stencil(x, Kernel::keys4);
+    const DeltaStencil1D s = delta_stencil(x, Delta::keys4);
     REQUIRE(s.width == 4);
     double sum = 0, m1 = 0, m2 = 0;
     for (int m = 0; m < s.width; ++m) {
@@ -349,14 +364,13 @@ TEST_CASE("keys4: closed form, unity, zero first and second moments", "[ib]") {
     REQUIRE(m2 == Approx(0.0).margin(1e-11));
   }
   // the positive kernels' second moments do not vanish (they vary with the offset)
-  for (Kernel k : {Kernel::peskin4, Kernel::roma3}) {
+  for (Delta k : {Delta::peskin4, Delta::roma3}) {
     const double x = 3.3;
     const DeltaStencil1D s = delta_stencil(x, k);
     double m2 = 0;
     for (int m = 0; m < s.width; ++m) m2 += s.w[m] * (x - (s.first + m + 0.5)) * (x - (s.first + m + 0.5));
     CHECK(m2 > 0.25);
   }
-  REQUIRE(kernel_from_name("keys4") == Kernel::keys4);
 }
 
 TEST_CASE("every kernel interpolates a linear field exactly and spreads adjointly in 3D", "[ib]") {
@@ -376,7 +390,7 @@ TEST_CASE("every kernel interpolates a linear field exactly and spreads adjointl
   const std::size_t n = 20;
   std::vector<double> X(3 * n), U(3 * n), F(3 * n);
   for (std::size_t c = 0; c < 3 * n; ++c) X[c] = p(rng), F[c] = std::sin(double(c));
-  for (Kernel k : {Kernel::peskin4, Kernel::roma3, Kernel::linear2, Kernel::keys4}) {
+  for (Delta k : {Delta::peskin4, Delta::roma3, Delta::linear2, Delta::keys4}) {
     interpolate<3>(g, u, X.data(), n, U.data(), k);
     for (std::size_t c = 0; c < n; ++c) {
       REQUIRE(U[3 * c] == Approx(0.2 + 0.01 * X[3 * c + 1]).margin(1e-14));  // rounding only
@@ -410,7 +424,7 @@ TEST_CASE("the spreading box spreads as spread<3> and clears exactly what it wro
     X[3 * c + 2] = 14.0 + around(rng);  // both sides of z = nz
     for (int d = 0; d < 3; ++d) F[3 * c + d] = std::cos(double(3 * c + d));
   }
-  for (Kernel k : {Kernel::peskin4, Kernel::roma3, Kernel::linear2, Kernel::keys4}) {
+  for (Delta k : {Delta::peskin4, Delta::roma3, Delta::linear2, Delta::keys4}) {
     std::vector<double> a0(g.size(), 7.0), a1(g.size(), 7.0), a2(g.size(), 7.0);
     std::vector<double> b0(g.size()), b1(g.size()), b2(g.size());
     double* p[3] = {a0.data(), a1.data(), a2.data()};
@@ -449,10 +463,10 @@ TEST_CASE("the spreading box clears the whole field when the stencils span the p
   std::vector<double> a0(g.size(), 5.0), a1(g.size(), 5.0), a2(g.size(), 5.0);
   double* p[3] = {a0.data(), a1.data(), a2.data()};
   SpreadingBox box;
-  box.spread(g, X.data(), F.data(), 1, p, Kernel::peskin4);  // one node: a box
+  box.spread(g, X.data(), F.data(), 1, p, Delta::peskin4);  // one node: a box
   box.clear_last(g, p);
   REQUIRE(a0[g.index(0, 0, 3)] == 5.0);  // far from the node in x and y: outside the box
-  box.spread(g, X.data(), F.data(), 2, p, Kernel::peskin4);  // a box 12 layers tall
+  box.spread(g, X.data(), F.data(), 2, p, Delta::peskin4);  // a box 12 layers tall
   box.clear_last(g, p);
   for (std::size_t i = 0; i < g.size(); ++i) REQUIRE((a0[i] == 0.0 && a1[i] == 0.0 && a2[i] == 0.0));
 }
@@ -476,7 +490,7 @@ TEST_CASE("spreading by z-layer arcs is bitwise spread<3> for any partition and 
       }
       for (int d = 0; d < 3; ++d) F[3 * c + d] = force(rng);
     }
-    for (Kernel k : {Kernel::peskin4, Kernel::cosine, Kernel::roma3, Kernel::linear2}) {
+    for (Delta k : {Delta::peskin4, Delta::cosine, Delta::roma3, Delta::linear2}) {
       INFO("cloud " << cloud << ", kernel " << static_cast<int>(k));
       std::vector<double> s0(g.size()), s1(g.size()), s2(g.size());
       double* serial[3] = {s0.data(), s1.data(), s2.data()};
@@ -538,9 +552,9 @@ TEST_CASE("the threaded spreading box clears the last box wherever the membrane 
     double* p[3] = {a0.data(), a1.data(), a2.data()};
     double* serial[3] = {s0.data(), s1.data(), s2.data()};
     SpreadingBox box;
-    box.clear_last_and_spread(g, here.data(), F.data(), n, p, Kernel::peskin4);
-    box.clear_last_and_spread(g, there.data(), F.data(), n, p, Kernel::peskin4);
-    spread<3>(g, there.data(), F.data(), n, serial, Kernel::peskin4);
+    box.clear_last_and_spread(g, here.data(), F.data(), n, p, Delta::peskin4);
+    box.clear_last_and_spread(g, there.data(), F.data(), n, p, Delta::peskin4);
+    spread<3>(g, there.data(), F.data(), n, serial, Delta::peskin4);
     REQUIRE(a0 == s0);
     REQUIRE(a1 == s1);
     REQUIRE(a2 == s2);
@@ -580,6 +594,6 @@ TEST_CASE("membrane position update: forward Euler first order, Adams-Bashforth 
     CHECK(p12 < p23 + 0.3);  // the order settles as dt falls
   }
   CHECK(error(true, 0.025) < 0.05 * error(false, 0.025));
-  CHECK(membrane_update_from_name("previous_velocity") == MembraneUpdate::previous_velocity);
-  CHECK_THROWS_AS(membrane_update_from_name("rk4"), std::invalid_argument);
+  CHECK(capsule::choice_from_name<MembraneUpdate>("previous_velocity") == MembraneUpdate::previous_velocity);
+  CHECK_FALSE(capsule::choice_from_name<MembraneUpdate>("rk4"));
 }

@@ -43,7 +43,7 @@ double couette_error(int nx, int ny, int nz, double nu, double u_bottom, double 
 TEST_CASE("Couette flow reaches the exact linear profile (D2Q9)", "[lbm]") {
   for (Precision p : test::both_precisions) {
     const double tol = test::is_single(p) ? 1e-5 : 1e-8;
-    INFO("precision " << precision_name(p));
+    INFO("precision " << capsule::choice_name(p));
     CHECK(couette_error<D2Q9>(4, 8, 1, 1.0 / 6.0, -0.05, 0.05, 2500, p) < tol);
     CHECK(couette_error<D2Q9>(3, 8, 1, 0.05, 0.0, 0.04, 8000, p) < tol);
   }
@@ -52,7 +52,7 @@ TEST_CASE("Couette flow reaches the exact linear profile (D2Q9)", "[lbm]") {
 TEST_CASE("Couette flow reaches the exact linear profile (D3Q19)", "[lbm]") {
   for (Precision p : test::both_precisions) {
     const double tol = test::is_single(p) ? 1e-5 : 1e-8;
-    INFO("precision " << precision_name(p));
+    INFO("precision " << capsule::choice_name(p));
     CHECK(couette_error<D3Q19>(4, 8, 3, 1.0 / 6.0, -0.05, 0.05, 2500, p) < tol);
     CHECK(couette_error<D3Q19>(3, 8, 2, 0.05, 0.0, 0.04, 8000, p) < tol);
   }

@@ -41,7 +41,7 @@ void compare(int nx, int ny, int nz, Precision prec, int steps) {
       for (std::size_t n = 0; n < aa.size(); ++n) same_u = same_u && aa.velocity(d)[n] == two.velocity(d)[n];
     for (std::size_t n = 0; n < aa.size(); ++n) same_u = same_u && aa.density()[n] == two.density()[n];
   }
-  INFO(precision_name(prec) << " Q" << L::Q << " " << nx << "x" << ny << "x" << nz << " steps " << steps);
+  INFO(capsule::choice_name(prec) << " Q" << L::Q << " " << nx << "x" << ny << "x" << nz << " steps " << steps);
   CHECK(same_f);
   CHECK(same_u);
   CHECK(aa.total_mass() == Approx(two.total_mass()).epsilon(1e-15));

@@ -37,7 +37,7 @@ void run_pair(Precision prec) {
   }
   std::vector<double> Xa = ring(g), Xb = Xa, P(Xa.size()), Ua(Xa.size()), Ub(Xa.size());
   const std::size_t n = Xa.size() / 3;
-  const ib::Kernel kernel = ib::Kernel::peskin4;
+  const ib::Delta kernel = ib::Delta::peskin4;
   double fraction = 0;
   for (int s = 0; s < 60; ++s) {
     for (std::size_t c = 0; c < n; ++c)
@@ -62,12 +62,12 @@ void run_pair(Precision prec) {
     ib::interpolate<3>(g, ub, Xb.data(), n, Ub.data(), kernel);
     double du = 0;
     for (std::size_t k = 0; k < Ua.size(); ++k) du = std::max(du, std::abs(Ua[k] - Ub[k]));
-    INFO("precision " << precision_name(prec) << " step " << s << " max |dU| " << du);
+    INFO("precision " << capsule::choice_name(prec) << " step " << s << " max |dU| " << du);
     REQUIRE(std::memcmp(Ua.data(), Ub.data(), Ua.size() * sizeof(double)) == 0);
     ib::advance<3>(Xa.data(), Ua.data(), n, 1.0);
     ib::advance<3>(Xb.data(), Ub.data(), n, 1.0);
   }
-  INFO("precision " << precision_name(prec) << ", rows written " << fraction);
+  INFO("precision " << capsule::choice_name(prec) << ", rows written " << fraction);
   CHECK(fraction < 0.5);  // the region really is restricted
   CHECK(std::memcmp(Xa.data(), Xb.data(), Xa.size() * sizeof(double)) == 0);
   bool same = true;

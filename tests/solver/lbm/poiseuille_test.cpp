@@ -52,7 +52,7 @@ void check_second_order(double nu, Precision prec) {
   std::vector<double> err;
   for (int h : H) err.push_back(poiseuille_error<L>(h, nu, 0.02, prec));
   const double p = fitted_order(H, err);
-  INFO("precision " << precision_name(prec) << " nu = " << nu << " errors " << err[0] << " " << err[1] << " " << err[2] << " order " << p);
+  INFO("precision " << capsule::choice_name(prec) << " nu = " << nu << " errors " << err[0] << " " << err[1] << " " << err[2] << " order " << p);
   // Demand order 2 within 0.1: the scheme (MRT, half-way bounce-back, forcing (22)-(23))
   // is second order in space; the leading error is a wall-slip of O(dx^2), so on 8-32
   // nodes the observed order may differ from 2 only by higher-order terms (O(dx^2)/H^2).

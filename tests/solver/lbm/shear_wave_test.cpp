@@ -55,7 +55,7 @@ template <class L>
 void check_viscosity_in(double tau, int m, bool per_node_field, Precision prec) {
   const double nu = (tau - 0.5) / 3.0;
   const double measured = measured_viscosity<L>(tau, m, per_node_field, prec);
-  INFO("precision " << precision_name(prec) << " tau " << tau << " mode " << m << " nu set " << nu << " measured " << measured
+  INFO("precision " << capsule::choice_name(prec) << " tau " << tau << " mode " << m << " nu set " << nu << " measured " << measured
               << " rel. error " << measured / nu - 1.0);
   // 1 % (the bound). Expected deviations: the discrete Laplacian's O((k dx)^2/12)
   // ~ 1e-3 for m = 1..2, H = 32, plus the O(dx^2/H^2) wall-slip of bounce-back.

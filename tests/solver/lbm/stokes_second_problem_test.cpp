@@ -62,7 +62,7 @@ template <class L>
 void check_stokes(double nu, Precision prec) {
   const StokesError coarse = stokes_error<L>(nu, 100, 16, prec);
   const StokesError fine = stokes_error<L>(nu, 400, 32, prec);
-  INFO("precision " << precision_name(prec) << " nu " << nu << " amplitude errors / U0 " << coarse.amplitude << " -> " << fine.amplitude
+  INFO("precision " << capsule::choice_name(prec) << " nu " << nu << " amplitude errors / U0 " << coarse.amplitude << " -> " << fine.amplitude
              << ", phase errors (rad) " << coarse.phase << " -> " << fine.phase);
   // On the finer grid (delta ~ 4.6 nodes for nu = 1/6, k dx = dx/delta ~ 0.2) the
   // O((dx/delta)^2) error is measured at 0.2 % of U0 in amplitude and 0.017 rad in phase

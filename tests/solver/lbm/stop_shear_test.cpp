@@ -16,7 +16,7 @@ template <class L>
 void check_stop(int nx, int ny, int nz, bool with_force, Precision prec) {
   const double nu = 1.0 / 6.0;
   Fluid<L> fluid(nx, ny, nz, nu, prec);
-  INFO("precision " << precision_name(prec));
+  INFO("precision " << capsule::choice_name(prec));
   const bool single = test::is_single(prec);
   const double mass0 = fluid.total_mass();
   REQUIRE(mass0 == Approx(double(fluid.size())).epsilon(1e-14));  // rho = 1 everywhere at rest

@@ -47,7 +47,7 @@ void check_two_layers_in(double nu1, double nu2, int nx, bool perturb, Precision
   // Measured slopes from differences well inside each layer (2 nodes from the interface).
   const double s1 = (u[H / 2 - 3] - u[1]) / (H / 2 - 4);
   const double s2 = (u[H - 2] - u[H / 2 + 2]) / (H / 2 - 4);
-  INFO("precision " << precision_name(prec) << " nu1 " << nu1 << " nu2 " << nu2 << " slopes " << s1 << " " << s2 << " exact " << a1 << " " << a2
+  INFO("precision " << capsule::choice_name(prec) << " nu1 " << nu1 << " nu2 " << nu2 << " slopes " << s1 << " " << s2 << " exact " << a1 << " " << a2
               << " ratio " << s1 / s2 << " exact " << nu2 / nu1);
   // Linear within each layer: every difference inside a layer equals its slope (1e-9 relative:
   // the converged profile is exactly piecewise linear up to the decayed transient).

@@ -107,7 +107,7 @@ TEST_CASE("A fluid at rest with a large relaxation time does not amplify noise (
     for (double tau : {2.0, 3.0, 5.5, 10.0}) {
       const double nu = (tau - 0.5) / 3.0;
       const double ratio = energy_ratio_at_rest<D2Q9>(nu, 24, 600, p);
-      INFO(precision_name(p) << " tau " << tau << " energy ratio " << ratio);
+      INFO(capsule::choice_name(p) << " tau " << tau << " energy ratio " << ratio);
       CHECK(ratio < 1.0);
     }
 }
@@ -117,7 +117,7 @@ TEST_CASE("A fluid at rest with a large relaxation time does not amplify noise (
     for (double tau : {2.0, 3.0, 5.5, 10.0}) {
       const double nu = (tau - 0.5) / 3.0;
       const double ratio = energy_ratio_at_rest<D3Q19>(nu, 10, 300, p);
-      INFO(precision_name(p) << " tau " << tau << " energy ratio " << ratio);
+      INFO(capsule::choice_name(p) << " tau " << tau << " energy ratio " << ratio);
       CHECK(ratio < 1.0);
     }
 }
@@ -137,7 +137,7 @@ TEST_CASE("A viscosity-ratio 5 and 10 inclusion in Couette flow stays bounded (D
     for (double V : {5.0, 10.0})
       for (bool smooth : {false, true}) {
         const double m = inclusion_max_speed<D2Q9>(64, 60, 1, 10.0, V, smooth, 3000, p);
-        INFO(precision_name(p) << " V " << V << " smooth " << smooth << " max|u|/U " << m);
+        INFO(capsule::choice_name(p) << " V " << V << " smooth " << smooth << " max|u|/U " << m);
         CHECK(m < 1.05);
       }
 }
@@ -149,7 +149,7 @@ TEST_CASE("A viscosity-ratio 5 and 10 sphere in Couette flow stays bounded (D3Q1
   for (Precision p : test::both_precisions)
     for (double V : {5.0, 10.0}) {
       const double m = inclusion_max_speed<D3Q19>(16, 16, 15, 5.0, V, false, 1000, p);
-      INFO(precision_name(p) << " V " << V << " max|u|/U " << m);
+      INFO(capsule::choice_name(p) << " V " << V << " max|u|/U " << m);
       CHECK(m < 1.05);
     }
 }
@@ -215,7 +215,7 @@ double kernel_vs_scalar(int nx, int ny, int nz, Precision prec) {
 TEST_CASE("The fused kernel with per-node rates equals the scalar collision plus streaming", "[lbm]") {
   for (Precision p : test::both_precisions) {
     const double tol = test::is_single(p) ? 1e-8 : 1e-15;
-    INFO("precision " << precision_name(p));
+    INFO("precision " << capsule::choice_name(p));
     CHECK(kernel_vs_scalar<D2Q9>(13, 7, 1, p) < tol);
     CHECK(kernel_vs_scalar<D3Q19>(9, 6, 5, p) < tol);
   }

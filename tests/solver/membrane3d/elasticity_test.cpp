@@ -56,7 +56,7 @@ TEST_CASE("a triangle under a known stretch gives the analytic neo-Hookean and S
       const Vec3 p = cur.x[(v + 1) % 3], q = cur.x[(v + 2) % 3];
       const Vec3 l_nu = (q - p).cross(n);  // |q - p| times the outward edge normal (counter-clockwise order)
       const Vec3 expected = 0.5 * sigma * l_nu;
-      INFO("law " << elastic_law_name(law) << " vertex " << v);
+      INFO("law " << capsule::choice_name(law) << " vertex " << v);
       // Both sides are exact formulas; the difference is round-off (1e-12 relative).
       CHECK((f[v] - expected).norm() < 1e-12 * expected.norm());
     }
@@ -121,7 +121,7 @@ TEST_CASE("elastic forces are minus the gradient of the discrete energy", "[memb
         max_f = std::max(max_f, std::abs(f[v][d]));
       }
     }
-    INFO("law " << elastic_law_name(law) << ": max |f + dE/dx| = " << max_err << " of max |f| = " << max_f);
+    INFO("law " << capsule::choice_name(law) << ": max |f + dE/dx| = " << max_err << " of max |f| = " << max_f);
     CHECK(max_err < 1e-6 * max_f);
   }
 }

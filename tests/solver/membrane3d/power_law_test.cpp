@@ -70,7 +70,7 @@ TEST_CASE("power law: the surface shear rate of a linear flow is exact at every 
   const double k = 1e-3;
   const double G[3][3] = {{0.2 * k, k, 0.1 * k}, {-0.3 * k, -0.5 * k, 0.4 * k}, {0.05 * k, -0.2 * k, 0.3 * k}};
   s.linear_flow(G);
-  ib::PowerLawViscosity<3> pl(s.grid, ib::Kernel::peskin4, {2.0, 0.64, 1.0 / 6.0, 8.0, k});
+  ib::PowerLawViscosity<3> pl(s.grid, ib::Delta::peskin4, {2.0, 0.64, 1.0 / 6.0, 8.0, k});
   pl.update(s.X.data(), s.normal.data(), s.area.data(), s.mesh.vertex_count(), s.velocity());
   double worst = 0;
   for (int c = 0; c < s.mesh.vertex_count(); ++c)
@@ -90,7 +90,7 @@ TEST_CASE("power law: simple shear on a sphere gives the analytic surface shear 
   CHECK(ib::PowerLawViscosity<3>::surface_shear_rate({{{0, k, 0}, {0, 0, 0}, {0, 0, 0}}}, ez) == Approx(k).epsilon(1e-14));
   CHECK(ib::PowerLawViscosity<3>::surface_shear_rate({{{0, k, 0}, {0, 0, 0}, {0, 0, 0}}}, ex) == Approx(0).margin(1e-18));
   s.linear_flow(shear);
-  ib::PowerLawViscosity<3> pl(s.grid, ib::Kernel::peskin4, {1.0, 1.0, 1.0 / 6.0, 8.0, k});
+  ib::PowerLawViscosity<3> pl(s.grid, ib::Delta::peskin4, {1.0, 1.0, 1.0 / 6.0, 8.0, k});
   pl.update(s.X.data(), s.normal.data(), s.area.data(), s.mesh.vertex_count(), s.velocity());
   double worst = 0;
   for (int c = 0; c < s.mesh.vertex_count(); ++c) {
@@ -110,8 +110,8 @@ TEST_CASE("power law: simple shear on a sphere gives the analytic surface shear 
 TEST_CASE("power law: (102) with its floor, and (103) spreads the membrane viscosity conservatively", "[membrane3d]") {
   Setup s;
   const double k = 1e-3, mu_a = 1.0 / 6.0, a = 8.0;
-  ib::PowerLawViscosity<3> newtonian(s.grid, ib::Kernel::peskin4, {2.0, 1.0, mu_a, a, k});
-  ib::PowerLawViscosity<3> thinning(s.grid, ib::Kernel::peskin4, {2.0, 0.5, mu_a, a, k});
+  ib::PowerLawViscosity<3> newtonian(s.grid, ib::Delta::peskin4, {2.0, 1.0, mu_a, a, k});
+  ib::PowerLawViscosity<3> thinning(s.grid, ib::Delta::peskin4, {2.0, 0.5, mu_a, a, k});
   // n = 1: mu_mem = K a mu_a whatever gamma; n = 1/2: K a mu_a (gamma/k)^(-1/2), floored at 0.01 k.
   CHECK(newtonian.viscosity(0.37 * k) == Approx(2.0 * a * mu_a).epsilon(1e-14));
   CHECK(thinning.viscosity(0.25 * k) == Approx(2.0 * a * mu_a * 2.0).epsilon(1e-14));

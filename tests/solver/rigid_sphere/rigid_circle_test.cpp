@@ -40,7 +40,7 @@ TEST_CASE("rigid circle: freely rotating, a steady stresslet of a circle about 0
   // the fit's spread at this radius from a ladder that leaves it out (0.84-0.85) and C's
   // uncertainty (0.1 % in C moves a_S by 0.002).
   const double a_S = 4.0 * std::sqrt(last.stresslet / 1.040);
-  const auto gap = capsule::ib::stresslet_radius_gap_2d("peskin4");
+  const auto gap = capsule::ib::stresslet_radius_gap_2d(capsule::ib::Delta::peskin4);
   REQUIRE(gap);
   CHECK(a_S - 4.0 == Approx(gap->c0 + gap->c1 / 4.0).margin(0.1));
 }
@@ -65,6 +65,6 @@ TEST_CASE("rigid circle: bad options are refused with the option's name and rang
   o.segments = 8;
   CHECK_THROWS_WITH(validate(o), Catch::Contains("segments must be in [16, 100000]"));
   o = RigidCircleOptions{};
-  o.kernel = "gauss";
-  CHECK_THROWS_AS(validate(o), std::invalid_argument);
+  o.every = 0;
+  CHECK_THROWS_WITH(validate(o), Catch::Contains("every must be in (0, kt]"));
 }

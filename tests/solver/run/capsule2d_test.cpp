@@ -295,14 +295,14 @@ TEST_CASE("IB self-mobility of a node force, used by the implicit membrane visco
   double X[2] = {20.3, 19.7}, F[2] = {1e-4, 0.0}, U[2] = {0, 0};
   double* p[2] = {fluid.force(0), fluid.force(1)};
   fluid.clear_force();
-  ib::spread<2>(grid, X, F, 1, p, ib::Kernel::peskin4);
+  ib::spread<2>(grid, X, F, 1, p, ib::Delta::peskin4);
   fluid.step();
   const double* u[2] = {fluid.velocity(0), fluid.velocity(1)};
-  ib::interpolate<2>(grid, u, X, 1, U, ib::Kernel::peskin4);
+  ib::interpolate<2>(grid, u, X, 1, U, ib::Delta::peskin4);
   const double m1 = U[0] / F[0];
   fluid.clear_force();
   fluid.step();
-  ib::interpolate<2>(grid, u, X, 1, U, ib::Kernel::peskin4);
+  ib::interpolate<2>(grid, u, X, 1, U, ib::Delta::peskin4);
   const double m2 = U[0] / F[0];
   INFO("self-mobility: step with the force " << m1 << ", next step " << m2);
   // fluid at rest: u = (0 + F/2)/rho exactly, times the constant self weight (3/8)^2; rounding only
@@ -321,7 +321,7 @@ TEST_CASE("single precision is selectable in a 2D scene and agrees with double",
   const double D_double = steady_D(scene_of(j), 1.0);
   j["resolution"]["precision"] = "single";
   const Scene s = scene_of(j);
-  REQUIRE(s.precision == "single");
+  REQUIRE(s.precision == capsule::lbm::Precision::single_precision);
   const double D_single = steady_D(s, 1.0);
   INFO("D_xy double " << D_double << " single " << D_single);
   CHECK(D_double > 0.01);

@@ -25,7 +25,7 @@ using namespace capsule;
 
 namespace {
 
-constexpr ib::Kernel kK = ib::Kernel::peskin4;
+constexpr ib::Delta kK = ib::Delta::peskin4;
 
 // A fluid that is neither at rest nor uniform in density: Couette flow plus a few steps of a
 // random force field.

@@ -1,7 +1,7 @@
 // `capsule bench lbm`: speed of the fused stream-collide step against the memory roofline.
 //
 // Kernels (same process, same machine, same threads, so the ratio survives a busy machine):
-//   baseline  the kernel before the rewrite (baseline_stream_collide.hpp: full moment transform,
+//   baseline  baseline_stream_collide.hpp (full moment transform,
 //             double populations, rho/u written and F read at every node);
 //   double    Fluid's kernel (split collision, in-place AA streaming) in double precision;
 //   double-2lat the same collision streamed between two lattices (shifted_stream_collide.hpp):
@@ -21,10 +21,9 @@
 //   D3Q19: double 392 B, single 240, rows0 304 / 152, two lattices 544; D2Q9: 208 / 136, 280.
 // Bandwidth: a STREAM triad a[i] = b[i] + s c[i] over arrays 4x the last-level cache, counted
 // as 32 B per element (b and c read, a written and write-allocated), best of several
-// repetitions, with the same thread count. (Until 2026-12-04 this was a copy counted as 16 B
-// per element without the write-allocate; the kernels then read 130-240 % of it.)
+// repetitions, with the same thread count.
 // Roofline fraction = MLUPS * 1e6 * bytes / bandwidth.
-#include "solver/lbm/bench.hpp"
+#include "solver/bench/lbm_bench.hpp"
 
 #include <omp.h>
 
@@ -36,7 +35,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include "solver/lbm/baseline_stream_collide.hpp"
+#include "solver/bench/baseline_stream_collide.hpp"
 #include "solver/lbm/equilibrium.hpp"
 #include "solver/lbm/fluid.hpp"
 
@@ -202,12 +201,12 @@ int bench_lbm(bool quick, int max_threads) {
   if (all > 1) thread_counts.push_back(all);
   const int scale = quick ? 1 : 5;
 
-  std::printf("LBM benchmark (fused MRT stream-collide, two lattices, SoA; kernels: see bench.cpp)\n");
+  std::printf("LBM benchmark (fused MRT stream-collide, two lattices, SoA; kernels: see solver/bench/lbm_bench.cpp)\n");
   std::printf("bytes/update: all traffic, write-allocate included: populations read+write (+ the second lattice's\n"
               " write-allocate), force read, rho+u write + write-allocate (D3Q19 double 392, single 240,\n"
               " rows0 = populations only 304 / 152, two lattices 544; D2Q9 208 / 136, two lattices 280)\n");
   std::printf("bandwidth: STREAM triad (32 B/element, write-allocate counted), same threads\n");
-  std::printf("x base: MLUPS over the baseline kernel's (the kernel before the rewrite) in this run\n");
+  std::printf("x base: MLUPS over the baseline kernel's (full moment transform, two lattices) in this run\n");
   double load[3] = {0.0, 0.0, 0.0};
   if (getloadavg(load, 3) == 3)
     std::printf("machine load average at start: %.2f (1 min), %d hardware threads used at most\n", load[0], all);

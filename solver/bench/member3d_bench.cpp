@@ -13,7 +13,7 @@
 // "membrane %" is (coupling + elastic + curvature + bending) / step: the goal is <= 15 %.
 // The same process runs every row, so their ratios survive a busy machine; the figures in
 // docs/findings/performance.md "The reference 3D member" were taken on an idle one.
-#include "solver/run/bench_member3d.hpp"
+#include "solver/bench/member3d_bench.hpp"
 
 #include <omp.h>
 
