@@ -3,36 +3,75 @@
 // post-collision populations f*_i(R) of every ring cell R are written to its 2^D fine ghost
 // children, once per coarse step; the ghost layer then streams them, uncollided, over the two
 // fine sub-steps, so a coarse population travels one coarse spacing in one coarse time step as
-// it would on the coarse lattice.
+// it does on the coarse lattice.
 //
 // Each child o of R gets the linear reconstruction
-//   f_i(o) = f*_i(R) + sum_a g_ia (d_a(o) - <d_a>),
-// with g_ia the coarse gradient of f*_i (central, or one-sided away from the block) and
-//   d(o) = x(o) - x(R) - c_i/4   if o + c_i is a block cell (it enters at the first sub-step),
-//        = x(o) - x(R) + c_i/4   if o + c_i is not, but o + 2 c_i is (it enters at the second),
-//        = x(o) - x(R)           otherwise (it stays in the ring),
-// in coarse spacings; <d> is the mean of d over the children. Subtracting the mean makes the
-// children average exactly f*_i(R) for every i: the mass a coarse population carries into the
-// fine lattice is the mass the coarse lattice loses (the volumetric balance).
-// The shifts +-c_i/4 (half a fine spacing) are what make a steady linear shear exact across the
-// interface: a post-collision population is the equilibrium taken (tau - 1) dt c_i upstream,
-// and (tau_f - 1) dt_f = (tau_c - 1) dt_c + dt_f/2 with tau_f - 1/2 = 2 (tau_c - 1/2).
+//   f_i(o) = f*_i(R) + sum_a g_ia d_a(o, i),
+// g_ia the coarse gradient of f*_i (coarse_gradient), and, in coarse spacings,
+//   d(o, i) = x(o) - x(R) - c_i/4   if o + c_i is a block cell (it enters at the first sub-step),
+//           = x(o) - x(R) + c_i/4   if o + c_i is not, but o + 2 c_i is (it enters at the second),
+//           = x(o) - x(R)           otherwise (it stays in the ring).
+// The shifts +-c_i/4 (half a fine spacing) give the fine lattice its own post-collision
+// populations in a flow linear in space: a post-collision population is the equilibrium taken
+// (tau - 1) dt c_i upstream, and (tau_f - 1) dt_f = (tau_c - 1) dt_c + dt_f/2 when
+// tau_f - 1/2 = 2 (tau_c - 1/2), so f*_fine(x) = f*_coarse(x - c_i dt_f/2).
+// Where a channel (R, i) feeds the fine lattice (R + c_i in it), its children carry
+// 2^D g_i . <d> more mass than the coarse lattice gives away (<d> the children mean, zero along
+// a plane face, not at the block's edges and corners); explode returns the sum, which the fluid
+// gives back (refined_fluid.hpp).
 #include <array>
 #include <cstddef>
+#include <vector>
 
 #include "solver/lbm/refinement/refined_block.hpp"
 
 namespace capsule::lbm::refinement {
 
-// coarse: Q populations per coarse cell (post-collision on uncovered cells); fine: Q per fine cell.
+// Gradient of population i over the coarse cells around ring cell R (coarse spacings):
+// central where both neighbours are uncovered channel cells, else one-sided away from the block.
 template <class L>
-void explode(const RefinedBlock<L::D>& block, const double* coarse, double* fine) {
+void coarse_gradient(const RefinedBlock<L::D>& block, const double* coarse, const std::array<int, 3>& R, int i,
+                     double (&g)[3]) {
+  const double fR = coarse[block.coarse_index(R[0], R[1], R[2]) * L::Q + i];
+  for (int a = 0; a < 3; ++a) g[a] = 0.0;
+  for (int a = 0; a < L::D; ++a) {
+    double f[2] = {0.0, 0.0};
+    bool ok[2] = {false, false};
+    for (int s = 0; s < 2; ++s) {
+      std::array<int, 3> N = R;
+      N[a] += s == 0 ? -1 : 1;
+      if (a != 1) N[a] = (N[a] % block.coarse_n(a) + block.coarse_n(a)) % block.coarse_n(a);
+      ok[s] = N[a] >= 0 && N[a] < block.coarse_n(a) && !block.covered(N);
+      if (ok[s]) f[s] = coarse[block.coarse_index(N[0], N[1], N[2]) * L::Q + i];
+    }
+    if (ok[0] && ok[1]) g[a] = 0.5 * (f[1] - f[0]);
+    else if (ok[1]) g[a] = f[1] - fR;
+    else if (ok[0]) g[a] = fR - f[0];
+  }
+}
+
+// Is the coarse cell R + c_i (wrapped) in the fine lattice?
+template <class L>
+bool feeds_fine(const RefinedBlock<L::D>& block, const std::array<int, 3>& R, int i) {
+  std::array<int, 3> S = R;
+  for (int a = 0; a < L::D; ++a) {
+    S[a] += L::c[i][a];
+    if (a != 1) S[a] = (S[a] % block.coarse_n(a) + block.coarse_n(a)) % block.coarse_n(a);
+  }
+  return S[1] >= 0 && S[1] < block.coarse_n(1) && block.in_fine_lattice(S);
+}
+
+// coarse: Q populations per coarse cell (post-collision on uncovered cells); fine: Q per fine
+// cell. Returns the mass (fine cell volumes) the fed channels carry beyond the coarse share.
+template <class L>
+double explode(const RefinedBlock<L::D>& block, const double* coarse, double* fine) {
   constexpr int Q = L::Q, D = L::D;
   const int children = 1 << D;
   const int nzc = D == 3 ? block.fine_n(2) / 2 : 1;
   const int nyc = block.fine_n(1) / 2, nxc = block.fine_n(0) / 2;
   const std::array<int, 3> base = block.parent({0, 0, 0});
   const long cells = long(nxc) * nyc * nzc;
+  std::vector<double> excess(std::size_t(cells), 0.0);
 #pragma omp parallel for schedule(static)
   for (long r = 0; r < cells; ++r) {
     std::array<int, 3> R{base[0] + int(r % nxc), base[1] + int((r / nxc) % nyc), base[2] + int(r / (long(nxc) * nyc))};
@@ -40,29 +79,12 @@ void explode(const RefinedBlock<L::D>& block, const double* coarse, double* fine
       if (block.spans(a)) R[a] = (R[a] % block.coarse_n(a) + block.coarse_n(a)) % block.coarse_n(a);
     if (!block.ring(R)) continue;
     const std::size_t cR = block.coarse_index(R[0], R[1], R[2]);
-    // Neighbours used for the gradient: inside the channel and not covered.
-    std::array<std::array<std::size_t, 2>, 3> nb{};
-    std::array<std::array<bool, 2>, 3> ok{};
-    for (int a = 0; a < D; ++a)
-      for (int s = 0; s < 2; ++s) {
-        std::array<int, 3> N = R;
-        N[a] += s == 0 ? -1 : 1;
-        if (a != 1) N[a] = (N[a] % block.coarse_n(a) + block.coarse_n(a)) % block.coarse_n(a);
-        ok[a][s] = N[a] >= 0 && N[a] < block.coarse_n(a) && !block.covered(N);
-        nb[a][s] = ok[a][s] ? block.coarse_index(N[0], N[1], N[2]) : cR;
-      }
     const std::array<int, 3> f0 = block.first_child(R);
     for (int i = 0; i < Q; ++i) {
       const double fR = coarse[cR * Q + i];
-      double g[3] = {0.0, 0.0, 0.0};
-      for (int a = 0; a < D; ++a) {
-        const double fm = coarse[nb[a][0] * Q + i], fp = coarse[nb[a][1] * Q + i];
-        if (ok[a][0] && ok[a][1]) g[a] = 0.5 * (fp - fm);
-        else if (ok[a][1]) g[a] = fp - fR;
-        else if (ok[a][0]) g[a] = fR - fm;
-      }
-      double d[8][3] = {};
-      double mean[3] = {0.0, 0.0, 0.0};
+      double g[3];
+      coarse_gradient<L>(block, coarse, R, i, g);
+      double sum = 0.0;
       for (int k = 0; k < children; ++k) {
         std::array<int, 3> o = f0;
         for (int a = 0; a < D; ++a) o[a] += (k >> a) & 1;
@@ -74,20 +96,17 @@ void explode(const RefinedBlock<L::D>& block, const double* coarse, double* fine
         double shift = 0.0;
         if (block.wrap_fine(o1) && block.fine_in_block(o1)) shift = -0.25;
         else if (block.wrap_fine(o2) && block.fine_in_block(o2)) shift = 0.25;
-        for (int a = 0; a < D; ++a) {
-          d[k][a] = 0.5 * (((k >> a) & 1) - 0.5) + shift * L::c[i][a];
-          mean[a] += d[k][a] / children;
-        }
-      }
-      for (int k = 0; k < children; ++k) {
-        std::array<int, 3> o = f0;
-        for (int a = 0; a < D; ++a) o[a] += (k >> a) & 1;
         double v = fR;
-        for (int a = 0; a < D; ++a) v += g[a] * (d[k][a] - mean[a]);
+        for (int a = 0; a < D; ++a) v += g[a] * (0.5 * (((k >> a) & 1) - 0.5) + shift * L::c[i][a]);
         fine[block.fine_index(o[0], o[1], o[2]) * Q + i] = v;
+        sum += v;
       }
+      if (feeds_fine<L>(block, R, i)) excess[std::size_t(r)] += sum - children * fR;
     }
   }
+  double total = 0.0;
+  for (double e : excess) total += e;
+  return total;
 }
 
 }  // namespace capsule::lbm::refinement
