@@ -5,9 +5,10 @@
 // fine sub-steps, so a coarse population travels one coarse spacing in one coarse time step as
 // it does on the coarse lattice.
 //
-// Each child o of R gets the linear reconstruction
-//   f_i(o) = f*_i(R) + sum_a g_ia d_a(o, i),
-// g_ia the coarse gradient of f*_i (coarse_gradient), and, in coarse spacings,
+// Each child o of R gets the Taylor reconstruction
+//   f_i(o) = f*_i(R) + sum_a [g_ia d_a + h_ia d_a^2 / 2],
+// g_ia, h_ia the coarse first and second derivatives of f*_i (coarse_taylor), and, in coarse
+// spacings,
 //   d(o, i) = x(o) - x(R) - c_i/4   if o + c_i is a block cell (it enters at the first sub-step),
 //           = x(o) - x(R) + c_i/4   if o + c_i is not, but o + 2 c_i is (it enters at the second),
 //           = x(o) - x(R)           otherwise (it stays in the ring).
@@ -16,9 +17,9 @@
 // (tau - 1) dt c_i upstream, and (tau_f - 1) dt_f = (tau_c - 1) dt_c + dt_f/2 when
 // tau_f - 1/2 = 2 (tau_c - 1/2), so f*_fine(x) = f*_coarse(x - c_i dt_f/2).
 // Where a channel (R, i) feeds the fine lattice (R + c_i in it), its children carry
-// 2^D g_i . <d> more mass than the coarse lattice gives away (<d> the children mean, zero along
-// a plane face, not at the block's edges and corners); explode returns the sum, which the fluid
-// gives back (refined_fluid.hpp).
+// more mass than the coarse lattice gives away (2^D g_i . <d> and the curvature terms; <d>, the
+// children mean, is zero along a plane face, not at the block's edges and corners); explode
+// returns the sum, which the fluid gives back (refined_fluid.hpp).
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -27,27 +28,49 @@
 
 namespace capsule::lbm::refinement {
 
-// Gradient of population i over the coarse cells around ring cell R (coarse spacings):
-// central where both neighbours are uncovered channel cells, else one-sided away from the block.
-template <class L>
-void coarse_gradient(const RefinedBlock<L::D>& block, const double* coarse, const std::array<int, 3>& R, int i,
-                     double (&g)[3]) {
-  const double fR = coarse[block.coarse_index(R[0], R[1], R[2]) * L::Q + i];
-  for (int a = 0; a < 3; ++a) g[a] = 0.0;
-  for (int a = 0; a < L::D; ++a) {
-    double f[2] = {0.0, 0.0};
-    bool ok[2] = {false, false};
-    for (int s = 0; s < 2; ++s) {
-      std::array<int, 3> N = R;
-      N[a] += s == 0 ? -1 : 1;
-      if (a != 1) N[a] = (N[a] % block.coarse_n(a) + block.coarse_n(a)) % block.coarse_n(a);
-      ok[s] = N[a] >= 0 && N[a] < block.coarse_n(a) && !block.covered(N);
-      if (ok[s]) f[s] = coarse[block.coarse_index(N[0], N[1], N[2]) * L::Q + i];
-    }
-    if (ok[0] && ok[1]) g[a] = 0.5 * (f[1] - f[0]);
-    else if (ok[1]) g[a] = f[1] - fR;
-    else if (ok[0]) g[a] = fR - f[0];
+// Taylor coefficients of population i around ring cell R (coarse spacings): per axis the first
+// derivative g_a and the second h_a, central where both neighbours are uncovered channel cells,
+// else one-sided away from the block over two cells (exact for a quadratic field, as f* is in a
+// linear shear: the equilibrium (5) holds u^2). Mixed derivatives are left out.
+struct Taylor {
+  double g[3] = {0.0, 0.0, 0.0};
+  double h[3] = {0.0, 0.0, 0.0};
+  // f(R + e) - f(R)
+  double change(const double (&e)[3]) const {
+    double v = 0.0;
+    for (int a = 0; a < 3; ++a) v += e[a] * (g[a] + 0.5 * h[a] * e[a]);
+    return v;
   }
+};
+
+template <class L>
+Taylor coarse_taylor(const RefinedBlock<L::D>& block, const double* coarse, const std::array<int, 3>& R, int i) {
+  Taylor t;
+  const double f0 = coarse[block.coarse_index(R[0], R[1], R[2]) * L::Q + i];
+  for (int a = 0; a < L::D; ++a) {
+    // f at R + k e_a for k = -2, -1, 1, 2 where usable.
+    double f[5] = {0.0, 0.0, f0, 0.0, 0.0};
+    bool ok[5] = {false, false, true, false, false};
+    for (int k = -2; k <= 2; ++k) {
+      if (k == 0) continue;
+      std::array<int, 3> N = R;
+      N[a] += k;
+      if (a != 1) N[a] = (N[a] % block.coarse_n(a) + block.coarse_n(a)) % block.coarse_n(a);
+      ok[k + 2] = N[a] >= 0 && N[a] < block.coarse_n(a) && !block.covered(N);
+      if (ok[k + 2]) f[k + 2] = coarse[block.coarse_index(N[0], N[1], N[2]) * L::Q + i];
+    }
+    if (ok[1] && ok[3]) {
+      t.g[a] = 0.5 * (f[3] - f[1]);
+      t.h[a] = f[3] - 2.0 * f0 + f[1];
+    } else if (ok[3] && ok[4]) {
+      t.g[a] = 0.5 * (-3.0 * f0 + 4.0 * f[3] - f[4]);
+      t.h[a] = f0 - 2.0 * f[3] + f[4];
+    } else if (ok[1] && ok[0]) {
+      t.g[a] = 0.5 * (3.0 * f0 - 4.0 * f[1] + f[0]);
+      t.h[a] = f0 - 2.0 * f[1] + f[0];
+    }
+  }
+  return t;
 }
 
 // Is the coarse cell R + c_i (wrapped) in the fine lattice?
@@ -82,8 +105,7 @@ double explode(const RefinedBlock<L::D>& block, const double* coarse, double* fi
     const std::array<int, 3> f0 = block.first_child(R);
     for (int i = 0; i < Q; ++i) {
       const double fR = coarse[cR * Q + i];
-      double g[3];
-      coarse_gradient<L>(block, coarse, R, i, g);
+      const Taylor t = coarse_taylor<L>(block, coarse, R, i);
       double sum = 0.0;
       for (int k = 0; k < children; ++k) {
         std::array<int, 3> o = f0;
@@ -96,8 +118,9 @@ double explode(const RefinedBlock<L::D>& block, const double* coarse, double* fi
         double shift = 0.0;
         if (block.wrap_fine(o1) && block.fine_in_block(o1)) shift = -0.25;
         else if (block.wrap_fine(o2) && block.fine_in_block(o2)) shift = 0.25;
-        double v = fR;
-        for (int a = 0; a < D; ++a) v += g[a] * (0.5 * (((k >> a) & 1) - 0.5) + shift * L::c[i][a]);
+        double e[3] = {0.0, 0.0, 0.0};
+        for (int a = 0; a < D; ++a) e[a] = 0.5 * (((k >> a) & 1) - 0.5) + shift * L::c[i][a];
+        const double v = fR + t.change(e);
         fine[block.fine_index(o[0], o[1], o[2]) * Q + i] = v;
         sum += v;
       }

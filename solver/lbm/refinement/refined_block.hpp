@@ -9,8 +9,9 @@
 // The block covers the coarse cells begin[a] <= i_a < end[a] on the refined axes a < D.
 // An axis may be spanned whole (begin 0, end n; x and z only, which are periodic): the
 // fine lattice is then periodic on it and has no ghost cells there. Otherwise the block,
-// its ring and one more coarse cell must lie inside the box without wrapping (the ring's
-// one-sided gradients need that cell): begin >= 2, end <= n - 2. In y (walls) always so.
+// its ring and two more coarse cells must lie inside the box without wrapping (the ring's
+// one-sided derivatives need them, explosion.hpp): begin >= 3, end <= n - 3. In y (walls)
+// always so.
 #include <array>
 #include <cstddef>
 #include <stdexcept>
@@ -45,9 +46,9 @@ class RefinedBlock {
         first_[a] = 0;
         nf_[a] = 2 * n_[a];
       } else {
-        if (begin_[a] < 2 || end_[a] > n_[a] - 2)
+        if (begin_[a] < 3 || end_[a] > n_[a] - 3)
           throw std::invalid_argument(key + " = [" + std::to_string(begin_[a]) + ", " + std::to_string(end_[a]) +
-                                      "): the block and two coarse cells around it must fit in [0, " +
+                                      "): the block and three coarse cells around it must fit in [0, " +
                                       std::to_string(n_[a]) + ")" + (a == 1 ? "" : " (or span the whole axis)"));
         first_[a] = begin_[a] - 1;
         nf_[a] = 2 * (end_[a] - begin_[a] + 2);
