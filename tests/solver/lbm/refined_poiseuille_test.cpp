@@ -35,15 +35,14 @@ double poiseuille_error(int H, bool span_x) {
 
 // Measured max error / u_max with a block spanning x: 3.04e-3, 7.60e-4, 1.90e-4 at H = 16, 32,
 // 64 (observed order 2.00, 2.00); with a box block: 3.38e-3, 8.84e-4, 2.45e-4 (order 1.94, 1.85).
-// H = 64 is left out here for run time. Bounds: order above 1.8 and the error at H = 16 within
-// 1.2x of the measured one.
+// Here, for run time, the order is checked on the band (H = 16, 32) and the box at H = 16 only.
+// Bounds: order above 1.8 and the errors at H = 16 within 1.2x of the measured ones.
 TEST_CASE("refined block: Poiseuille flow converges at second order across the interface", "[lbm][refinement]") {
   const double band16 = poiseuille_error(16, true), band32 = poiseuille_error(32, true);
   INFO("band: " << band16 << " " << band32);
   CHECK(band16 < 1.2 * 3.04e-3);
   CHECK(std::log2(band16 / band32) > 1.8);
-  const double box16 = poiseuille_error(16, false), box32 = poiseuille_error(32, false);
-  INFO("box: " << box16 << " " << box32);
+  const double box16 = poiseuille_error(16, false);
+  INFO("box: " << box16);
   CHECK(box16 < 1.2 * 3.38e-3);
-  CHECK(std::log2(box16 / box32) > 1.8);
 }
