@@ -33,7 +33,7 @@ TEST_CASE("a complete member named with a trailing slash or dot parts is not run
   const auto time_before = fs::last_write_time(p.h5);
 
   const std::string name = p.dir.filename().string();
-  for (const std::string spelling : {p.dir.string() + "/", p.dir.string() + "//", p.dir.string() + "/.",
+  for (const std::string& spelling : {p.dir.string() + "/", p.dir.string() + "//", p.dir.string() + "/.",
                                      (p.dir / ".." / name).string() + "/"}) {
     INFO(spelling);
     const auto again = run_member(spelling);

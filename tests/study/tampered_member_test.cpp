@@ -109,7 +109,7 @@ TEST_CASE("status, plan and run verify a member file before calling it complete;
   SECTION("one flipped bit in a dataset") { capsule::testing::flip_bit_in_dataset(p.h5.string(), "series/D_xy"); }
   const std::string damaged = testing::read_text(p.h5);
 
-  for (const std::vector<std::string> command : {std::vector<std::string>{"status", "c.json"},
+  for (const std::vector<std::string>& command : {std::vector<std::string>{"status", "c.json"},
                                                  std::vector<std::string>{"plan", "c.json"},
                                                  std::vector<std::string>{"run", "c.json"}}) {
     INFO(command[0]);

@@ -224,7 +224,8 @@ TEST_CASE("capsule --version, examples in --help, and the subcommands through CL
   CHECK(help.output.find("Examples:") != std::string::npos);
   CHECK(help.output.find("capsule check tests/data/scenes/circle_quick_2d.json") != std::string::npos);
   // Every subcommand is listed by CLI11 and has its own --help with an example or its exit status.
-  for (const std::string& sub : {"check", "version", "bench", "reference-bim", "rigid-sphere", "rigid-circle"}) {
+  for (const char* name : {"check", "version", "bench", "reference-bim", "rigid-sphere", "rigid-circle"}) {
+    const std::string sub = name;
     INFO(sub);
     CHECK(help.output.find("  " + sub) != std::string::npos);
     const Result sub_help = capsule(sub + " --help");
