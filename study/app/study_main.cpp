@@ -18,6 +18,7 @@
 #include "study/campaign/campaign_files.hpp"
 #include "study/run/member_run.hpp"
 #include "study/run/provenance.hpp"
+#include "study/campaign/member_selection.hpp"
 #include "study/plan/plan_table.hpp"
 #include "study/run/run_lock.hpp"
 #include "study/run/script_path.hpp"
@@ -61,6 +62,10 @@ int main_body(int argc, char** argv) {
                    "counted once in the total)")
       ->required()->expected(1, -1);
   plan->add_option("--results", results_dir, "results folder")->capture_default_str();
+  std::vector<std::string> plan_cases, plan_where;
+  plan->add_option("--case", plan_cases, "plan only the members of this case (repeatable), as `study run --case`");
+  plan->add_option("--where", plan_where,
+                   "plan only the members whose scene has KEY=VALUE (repeatable, all must hold), as `study run --where`");
 
   RunRequest run_request;
   auto* run = app.add_subcommand("run", "run every member that is not complete (GNU Parallel); resumable");
@@ -197,13 +202,18 @@ int main_body(int argc, char** argv) {
   if (*plan) {
     const std::vector<std::string> files = campaign_files_of(plan_files);
     if (files.size() > 1) {
+      if (!plan_cases.empty() || !plan_where.empty()) {
+        std::cerr << "study plan: --case and --where plan one campaign file at a time\n";
+        return exit_usage;
+      }
       print_plans(files, results_dir, std::cout);
       return exit_ok;
     }
     const Campaign campaign = load_campaign(files.front());
     const ResultsLayout layout(results_dir, campaign.name);
     require_same_campaign(campaign, layout);
-    print_plan(campaign, layout, std::cout);  // member by member: bounded memory
+    print_plan(campaign, layout, std::cout,  // member by member: bounded memory
+               select_members(files.front(), campaign, plan_cases, plan_where));
     return exit_ok;
   }
   run_request.allow_dirty = run_request.allow_dirty || allow_dirty_from_environment();

@@ -75,7 +75,8 @@ CampaignEstimate estimate_campaign(const CampaignSurvey& survey, const MeasuredS
   return e;
 }
 
-PlanSummary print_plan(const Campaign& plan_campaign, const ResultsLayout& layout, std::ostream& out) {
+PlanSummary print_plan(const Campaign& plan_campaign, const ResultsLayout& layout, std::ostream& out,
+                       const MemberSelection& selection) {
   PlanSummary summary;
   // Pass 1, member by member: the measured speeds of members that ran, and what is pending.
   MeasuredSpeed speed;
@@ -99,6 +100,7 @@ PlanSummary print_plan(const Campaign& plan_campaign, const ResultsLayout& layou
   if (expected >= kProgressEvery)
     out << "planning about " << expected << " members: their state and cost first, then the table\n" << std::flush;
   std::size_t read = 0;
+  std::vector<bool> matched(selection.where.size(), false);
   for_each_member(
       plan_campaign,
       [&](Member&& m) {
@@ -106,12 +108,16 @@ PlanSummary print_plan(const Campaign& plan_campaign, const ResultsLayout& layou
         strays.erase(m.dir_name());
         const MemberCondition condition = inspect_member(layout.member(m), m.id);
         add_measurement(speed, m, layout.member(m));
+        for (std::size_t c = 0; c < selection.where.size(); ++c)
+          matched[c] = matched[c] || scene_matches(m.scene, {selection.where[c]});
+        if (!selection.selects(m)) return;
         if (condition.state != MemberState::complete && !copyable(m, condition)) {
           ++pending_count;
           any_3d = any_3d || m.scene.at("dim").get<int>() == 3;
         }
       },
       [](std::size_t, const std::string&) {});
+  require_matches(plan_campaign.source, selection, matched);
   CampaignEstimate campaign;
   campaign.pending = pending_count;
   if (pending_count > 0) {
@@ -129,13 +135,15 @@ PlanSummary print_plan(const Campaign& plan_campaign, const ResultsLayout& layou
   double total_node_steps = 0;
   double total_node_kt = 0;
   double peak_memory = 0, longest = 0;
-  std::size_t members = 0, copies = 0;
+  std::size_t members = 0, copies = 0, index = 0;
   std::map<MemberState, std::size_t> counts;
   // Pass 2: one row per member, printed as it is expanded.
   for_each_member(
       plan_campaign,
       [&](Member&& m) {
-        const std::size_t i = members++;
+        const std::size_t i = index++;  // the plan order of the whole campaign
+        if (!selection.selects(m)) return;
+        ++members;
         const MemberCondition condition = inspect_member(layout.member(m), m.id);
         ++counts[condition.state];
         const int dim = m.scene.at("dim").get<int>();
@@ -182,8 +190,8 @@ PlanSummary print_plan(const Campaign& plan_campaign, const ResultsLayout& layou
         else if (!condition.reason.empty()) out << "  -- " << condition.reason;
         out << "\n";
       },
-      [&](std::size_t index, const std::string& case_name) {
-        out << "     (case " << case_name << " has the scene of member " << index << ")\n";
+      [&](std::size_t member_index, const std::string& case_name) {
+        if (selection.everything()) out << "     (case " << case_name << " has the scene of member " << member_index << ")\n";
       });
   // Members side by side: the sum spread over the jobs, and never less than the longest one.
   if (campaign.pending > 0) campaign.wall_seconds = std::max(longest, campaign.member_seconds / campaign.jobs);
@@ -192,6 +200,7 @@ PlanSummary print_plan(const Campaign& plan_campaign, const ResultsLayout& layou
       << " interrupted, " << counts[MemberState::failed] << " failed, " << counts[MemberState::unstable]
       << " unstable, " << counts[MemberState::stopped] << " stopped";
   if (counts[MemberState::unreadable] > 0) out << ", " << counts[MemberState::unreadable] << " unreadable";
+  if (!selection.everything()) out << " (the " << members << " of " << index << " that --case / --where select)";
   out << "\n";
   if (copies > 0)
     out << copies << " of them finished in other campaigns under " << layout.root.parent_path().string()

@@ -5,6 +5,7 @@
 // Changes nothing. Members are expanded, inspected and printed one at a time
 // (for_each_member, in two passes: measured speeds first, then the rows), so a
 // 10^6-member grid plans in bounded memory.
+#include "study/campaign/member_selection.hpp"
 #include <filesystem>
 #include <map>
 #include <ostream>
@@ -27,7 +28,10 @@ struct PlanSummary {
   double wall_seconds = 0, peak_memory = 0;
 };
 
-PlanSummary print_plan(const Campaign& campaign, const ResultsLayout& layout, std::ostream& out);
+// With a selection (--case, --where), only the members it selects are listed and costed; a
+// --where that matches no member is refused (CampaignError).
+PlanSummary print_plan(const Campaign& campaign, const ResultsLayout& layout, std::ostream& out,
+                       const MemberSelection& selection = {});
 
 // Several campaigns planned together (several files, or a folder of them, e.g. campaigns/ch*.json): each
 // one's plan, then the total with every member shared between campaigns counted once (the

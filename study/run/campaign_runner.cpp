@@ -28,6 +28,7 @@
 #include "study/state/member_reuse.hpp"
 #include "study/run/joblog.hpp"
 #include "study/campaign/member_filter.hpp"
+#include "study/campaign/member_selection.hpp"
 #include "study/run/member_wrapper.hpp"
 #include "study/run/provenance.hpp"
 #include "study/run/run_lock.hpp"
@@ -127,32 +128,13 @@ void print_status(const CampaignSurvey& survey, std::ostream& out) {
 
 RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
   CampaignSurvey survey = survey_campaign(request.campaign_file, request.results_dir);
-  // --case: every name must be a case of the campaign (checked before anything is written).
-  for (const auto& name : request.cases) {
-    std::string known;
-    bool found = false;
-    for (const auto& c : survey.campaign.cases) {
-      known += (known.empty() ? "" : ", ") + c.name;
-      found = found || c.name == name;
-    }
-    if (!found)
-      throw campaign_error(request.campaign_file, "cases", "--case \"" + name + "\" names no case of this campaign",
-                           known.empty() ? "no --case: this campaign has no cases" : "one of: " + known);
-  }
-  // --where: every condition must parse and match at least one member of the campaign.
-  std::vector<SceneCondition> conditions;
-  for (const auto& text : request.where) {
-    try {
-      conditions.push_back(parse_scene_condition(text));
-    } catch (const std::invalid_argument& e) {
-      throw campaign_error(request.campaign_file, "--where", e.what(), "KEY=VALUE with a dotted scene key");
-    }
-    const bool any = std::any_of(survey.members.begin(), survey.members.end(),
-                                 [&](const Member& m) { return scene_matches(m.scene, {conditions.back()}); });
-    if (!any)
-      throw campaign_error(request.campaign_file, "--where", "\"" + text + "\" matches no member of this campaign",
-                           "a dotted key of the canonical scene (capsule check) and a value some member has");
-  }
+  // --case and --where: checked before anything is written.
+  const MemberSelection selection = select_members(request.campaign_file, survey.campaign, request.cases, request.where);
+  std::vector<bool> matched(selection.where.size(), false);
+  for (const Member& m : survey.members)
+    for (std::size_t c = 0; c < selection.where.size(); ++c)
+      matched[c] = matched[c] || scene_matches(m.scene, {selection.where[c]});
+  require_matches(request.campaign_file, selection, matched);
   // Refused before anything is written: a dirty build's members could not be reproduced.
   // The capsule binary's version is what its member files record: checked here, and again by
   // run-member before each member, so a binary rebuilt mid-campaign cannot mix versions.
@@ -172,14 +154,7 @@ RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
   RunLock lock(survey.layout.lock_file(), survey.layout.running_info(), members_in_progress(survey));
   prepare_member_directories(survey);
 
-  const auto selected = [&](const Member& m) {
-    if (!scene_matches(m.scene, conditions)) return false;
-    if (request.cases.empty()) return true;
-    for (const auto& name : request.cases)
-      if (m.case_name == name || std::find(m.other_cases.begin(), m.other_cases.end(), name) != m.other_cases.end())
-        return true;
-    return false;
-  };
+  const auto selected = [&selection](const Member& m) { return selection.selects(m); };
   std::vector<std::size_t> to_run;
   bool any_3d = false;
   for (std::size_t i = 0; i < survey.members.size(); ++i) {

@@ -16,6 +16,7 @@
 #include "solver/scene/scene.hpp"
 #include "study/plan/cost_estimate.hpp"
 #include "study/plan/phase_lengths.hpp"
+#include "tests/study/study_test_support.hpp"
 
 using namespace capsule::study;
 namespace fs = std::filesystem;
@@ -111,4 +112,28 @@ TEST_CASE("plan's member seconds against the shipped members' measured wall time
   std::cout << "all " << logs.size() << " members: median |log(estimate/measured)| " << m << " (factor " << std::exp(m)
             << "), worst " << worst << " (factor " << std::exp(worst) << ")\n";
   CHECK(m < std::log(1.3));
+}
+
+TEST_CASE("study plan --case and --where list only the members they select as study run does", "[study][plan]") {
+  const auto all = capsule::study::testing::run_study({"plan", "campaigns/ch3_ca.json"}, CAPSULE_SOURCE_DIR);
+  REQUIRE(all.exit_code == 0);
+  CHECK(all.output.find("18 members:") != std::string::npos);
+  const auto level = capsule::study::testing::run_study({"plan", "campaigns/ch3_ca.json", "--where", "resolution.a=5"},
+                                                        CAPSULE_SOURCE_DIR);
+  INFO(level.output);
+  CHECK(level.exit_code == 0);
+  CHECK(level.output.find("6 members:") != std::string::npos);
+  CHECK(level.output.find("(the 6 of 18 that --case / --where select)") != std::string::npos);
+  CHECK(level.output.find("-a7-") == std::string::npos);
+  const auto two_d = capsule::study::testing::run_study({"plan", "campaigns/ch3_ca.json", "--case", "2d"}, CAPSULE_SOURCE_DIR);
+  CHECK(two_d.exit_code == 0);
+  CHECK(two_d.output.find("6 members:") != std::string::npos);
+  CHECK(two_d.output.find("3d-Ca") == std::string::npos);
+  const auto none = capsule::study::testing::run_study({"plan", "campaigns/ch3_ca.json", "--where", "resolution.a=9"},
+                                                       CAPSULE_SOURCE_DIR);
+  CHECK(none.exit_code == 2);
+  CHECK(none.output.find("matches no member") != std::string::npos);
+  const auto bad_case = capsule::study::testing::run_study({"plan", "campaigns/ch3_ca.json", "--case", "4d"}, CAPSULE_SOURCE_DIR);
+  CHECK(bad_case.exit_code == 2);
+  CHECK(bad_case.output.find("one of: 2d, 3d") != std::string::npos);
 }
