@@ -35,22 +35,6 @@ struct TooDeep {
   std::string path;
 };
 
-// Escapes control characters (and DEL) as \u00XX; leaves everything else as it is.
-std::string escape_controls(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (char c : text) {
-    const auto u = static_cast<unsigned char>(c);
-    if (u < 0x20 || u == 0x7f) {
-      char code[8];
-      std::snprintf(code, sizeof code, "\\u%04x", u);
-      out += code;
-    } else {
-      out += c;
-    }
-  }
-  return out;
-}
 
 }  // namespace
 
@@ -104,6 +88,22 @@ json parse_json_text(const std::string& text, const std::string& source) {
       allowed = " (allowed: a number, string, true, false, null, object or array; NaN and Infinity are not JSON)";
     throw JsonTextError(source + ": " + where + ": not valid JSON: " + message_text(what) + allowed);
   }
+}
+
+std::string escape_controls(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 0x20 || u == 0x7f) {
+      char code[8];
+      std::snprintf(code, sizeof code, "\\u%04x", u);
+      out += code;
+    } else {
+      out += c;
+    }
+  }
+  return out;
 }
 
 std::string message_text(const std::string& text) {

@@ -24,6 +24,9 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& sourc
 // ESC never reaches the terminal, a NUL never cuts the message) and, past kMessageChars, cut
 // with its full length named.
 inline constexpr std::size_t kMessageChars = 120;
+// Control characters (and DEL) escaped as \u00XX, everything else as it is, uncut: a campaign's
+// text as the terminal gets it (an ESC that would recolour it, a CR that would overwrite the line).
+std::string escape_controls(const std::string& text);
 std::string message_text(const std::string& text);
 // A JSON value as an error message shows it: its JSON text, escaped and cut as above.
 std::string message_value(const nlohmann::json& value);

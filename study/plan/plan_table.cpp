@@ -12,6 +12,7 @@
 #include "study/state/member_state.hpp"
 
 #include "solver/io/member_file.hpp"
+#include "solver/scene/json_text.hpp"
 #include "solver/scene/memory_estimate.hpp"
 #include "study/plan/concurrency.hpp"
 #include "study/plan/duration_text.hpp"
@@ -23,22 +24,6 @@ namespace capsule::study {
 
 namespace {
 
-// A campaign's text as the terminal gets it: control characters (an ESC that would recolour or
-// retitle the terminal, a carriage return that would overwrite the line) escaped as \u00XX.
-std::string printable(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    const auto u = static_cast<unsigned char>(c);
-    if (u < 0x20 || u == 0x7f) {
-      char code[8];
-      std::snprintf(code, sizeof code, "\\u%04x", u);
-      out += code;
-    } else {
-      out += c;
-    }
-  }
-  return out;
-}
 std::string format_number(double x) {
   char text[32];
   std::snprintf(text, sizeof text, "%.3g", x);
@@ -126,7 +111,7 @@ PlanSummary print_plan(const Campaign& plan_campaign, const ResultsLayout& layou
     campaign.threads = conc.threads;
   }
   out << "campaign " << plan_campaign.name;
-  if (!plan_campaign.description.empty()) out << ": " << printable(plan_campaign.description);
+  if (!plan_campaign.description.empty()) out << ": " << escape_controls(plan_campaign.description);
   out << "\nresults: " << layout.root.string() << "\n";
   out << std::left << std::setw(5) << "#" << std::setw(12) << "state" << std::setw(4) << "dim" << std::setw(12)
       << "nodes" << std::setw(14) << "kt" << std::setw(12) << "node-steps" << std::setw(10) << "seconds"

@@ -16,33 +16,13 @@
 #include "solver/scene/scene.hpp"
 #include "study/plan/cost_estimate.hpp"
 #include "study/plan/phase_lengths.hpp"
+#include "tests/study/shipped_members.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace capsule::study;
 namespace fs = std::filesystem;
 
 namespace {
-
-struct Shipped {
-  std::string campaign;
-  capsule::io::MemberStatus status;
-};
-
-std::vector<Shipped> shipped_members() {
-  std::vector<Shipped> all;
-  const fs::path results = fs::path(CAPSULE_SOURCE_DIR) / "results";
-  for (const auto& campaign : fs::directory_iterator(results)) {
-    if (!fs::is_directory(campaign.path() / "members")) continue;
-    for (const auto& member : fs::directory_iterator(campaign.path() / "members")) {
-      const fs::path h5 = member.path() / "member.h5";
-      if (!fs::exists(h5)) continue;
-      capsule::io::MemberStatus s = capsule::io::read_member_status(h5.string());
-      if (s.status != "complete" || !s.scene.is_object() || !std::isfinite(s.t_stop) || !std::isfinite(s.t_end)) continue;
-      all.push_back({campaign.path().filename().string(), std::move(s)});
-    }
-  }
-  return all;
-}
 
 double median(std::vector<double> v) {
   std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
@@ -82,7 +62,7 @@ TEST_CASE("an empty results folder expects the shipped members' phase lengths, l
 // shipped members ran on a shared 2-core machine, one or two at a time, so a single member's wall
 // time carries the load it ran beside.
 TEST_CASE("plan's member seconds against the shipped members' measured wall time", "[study][plan]") {
-  const std::vector<Shipped> all = shipped_members();
+  const auto all = capsule::study::testing::shipped_complete_members();
   REQUIRE(all.size() > 100);
   std::map<std::string, PhaseLengths> without;
   for (const auto& m : all)

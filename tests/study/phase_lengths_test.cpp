@@ -11,6 +11,7 @@
 #include "study/plan/cost_estimate.hpp"
 #include "study/plan/phase_lengths.hpp"
 #include "solver/scene/scene.hpp"
+#include "tests/study/shipped_members.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace capsule::study;
@@ -83,17 +84,8 @@ TEST_CASE("phase lengths predict the shipped members' phase ends several times b
     double kt[2];
   };
   std::vector<Finished> all;
-  const fs::path results = fs::path(CAPSULE_SOURCE_DIR) / "results";
-  for (const auto& campaign : fs::directory_iterator(results)) {
-    if (!fs::is_directory(campaign.path() / "members")) continue;
-    for (const auto& member : fs::directory_iterator(campaign.path() / "members")) {
-      const fs::path h5 = member.path() / "member.h5";
-      if (!fs::exists(h5)) continue;
-      const capsule::io::MemberStatus s = capsule::io::read_member_status(h5.string());
-      if (s.status != "complete" || !s.scene.is_object() || !std::isfinite(s.t_stop) || !std::isfinite(s.t_end)) continue;
-      all.push_back({campaign.path().filename().string(), s.scene, {s.t_stop, s.t_end - s.t_stop}});
-    }
-  }
+  for (const auto& m : capsule::study::testing::shipped_complete_members())
+    all.push_back({m.campaign, m.status.scene, {m.status.t_stop, m.status.t_end - m.status.t_stop}});
   REQUIRE(all.size() > 100);
   std::map<std::string, PhaseLengths> without;  // campaign -> the others' members
   for (const auto& f : all)
