@@ -23,19 +23,10 @@
 using namespace capsule::study;
 namespace fs = std::filesystem;
 
+using capsule::study::testing::set_age;
+using capsule::study::testing::wait_for;
+
 namespace {
-
-bool wait_for(const std::function<bool()>& condition, double seconds) {
-  for (int i = 0; i < static_cast<int>(seconds * 100); ++i) {
-    if (condition()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  return condition();
-}
-
-void set_age(const fs::path& file, double seconds) {
-  fs::last_write_time(file, fs::file_time_type::clock::now() - std::chrono::seconds(static_cast<long>(seconds)));
-}
 
 // Every file of the member folder but temporaries, with its content.
 std::map<std::string, std::string> member_files(const fs::path& dir) {

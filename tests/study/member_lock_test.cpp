@@ -20,6 +20,9 @@
 using namespace capsule::study;
 namespace fs = std::filesystem;
 
+using capsule::study::testing::set_age;
+using capsule::study::testing::wait_for;
+
 namespace {
 
 // `study run-member DIR 1` as the wrapper runs it, started in the background; returns its pid.
@@ -40,19 +43,6 @@ testing::CommandResult run_member_now(const fs::path& member_dir) {
   return testing::run_shell(shell_quote(testing::study_binary().string()) + " run-member --capsule " +
                             shell_quote(testing::capsule_binary().string()) + " " + shell_quote(member_dir.string()) +
                             " 1 </dev/null");
-}
-
-bool wait_for(const std::function<bool()>& condition, double seconds) {
-  for (int i = 0; i < static_cast<int>(seconds * 100); ++i) {
-    if (condition()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  return condition();
-}
-
-void set_age(const fs::path& file, double seconds) {
-  const auto t = fs::file_time_type::clock::now() - std::chrono::seconds(static_cast<long>(seconds));
-  fs::last_write_time(file, t);
 }
 
 }  // namespace

@@ -1,10 +1,12 @@
 #include "tests/study/study_test_support.hpp"
 
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <thread>
 #include <unistd.h>
 
 #include "study/run/shell_quote.hpp"
@@ -80,6 +82,19 @@ nlohmann::json tiny_campaign(const std::string& name, const std::vector<double>&
           {"description", "tiny 2D members for the study tests"},
           {"base", tiny_scene(shear_kt, recover_kt)},
           {"sweep", {{"grid", {{"Ca", ca}}}}}};
+}
+
+bool wait_for(const std::function<bool()>& condition, double seconds) {
+  for (int i = 0; i < static_cast<int>(seconds * 100); ++i) {
+    if (condition()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return condition();
+}
+
+void set_age(const std::filesystem::path& file, double seconds) {
+  std::filesystem::last_write_time(
+      file, std::filesystem::file_time_type::clock::now() - std::chrono::seconds(static_cast<long>(seconds)));
 }
 
 }  // namespace capsule::study::testing

@@ -2,6 +2,7 @@
 // Helpers for the study tests: scratch folders, running the real `study` binary, tiny
 // scenes that the real `capsule` runs in about a second.
 #include <filesystem>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -36,5 +37,10 @@ nlohmann::json tiny_scene(double shear_kt, double recover_kt);
 // A campaign document around tiny_scene with a grid over Ca.
 nlohmann::json tiny_campaign(const std::string& name, const std::vector<double>& ca, double shear_kt,
                              double recover_kt);
+
+// Polls `condition` every 10 ms for up to `seconds`; its last value.
+bool wait_for(const std::function<bool()>& condition, double seconds);
+// Sets a file's modification time `seconds` into the past (a stale lock or heartbeat).
+void set_age(const std::filesystem::path& file, double seconds);
 
 }  // namespace capsule::study::testing
