@@ -11,6 +11,7 @@
 #include "solver/app/cli_support.hpp"
 #include "solver/app/reference_bim_command.hpp"
 #include "solver/app/rigid_sphere_command.hpp"
+#include "solver/app/units_command.hpp"
 #include "solver/scene/memory_estimate.hpp"
 #include "solver/run/run_member.hpp"
 #include "solver/scene/scene.hpp"
@@ -85,6 +86,7 @@ int main(int argc, char** argv) {
   std::vector<Command> commands;
   commands.push_back(add_check_command(app));
   commands.push_back(add_version_command(app));
+  commands.push_back(capsule::cli::add_units_command(app));
   commands.push_back(capsule::cli::add_bench_command(app));
   commands.push_back(capsule::cli::add_reference_bim_command(app));
   commands.push_back(capsule::cli::add_rigid_sphere_command(app));

@@ -17,6 +17,7 @@
 #include "solver/io/member_file.hpp"
 #include "solver/io/output_path.hpp"
 #include "solver/io/write_guard.hpp"
+#include "solver/scene/physical_cell.hpp"
 #include "solver/scene/memory_estimate.hpp"
 #include "solver/run/progress.hpp"
 #include "solver/run/run_control.hpp"
@@ -126,6 +127,13 @@ int run_member(const RunOptions& options) {
       out.set_attribute("dim", static_cast<long>(scene.dim));
       out.set_attribute("threads", threads);
       out.set_attribute("restarts", restarts);
+      // A cell given in physical units: what kt = 1 and a length of a are, in seconds and
+      // micrometres (the scene attribute holds the physical block and its groups).
+      if (scene.physical) {
+        const PhysicalGroups g = physical_groups(*scene.physical, scene.law, scene.sls_viscosity);
+        out.set_attribute("seconds_per_kt", g.time_unit_s);
+        out.set_attribute("micrometres_per_a", g.length_unit_um);
+      }
       write_starting_progress(progress_path_for(options.output_path));
       out.checkpoint();  // a .partial exists from the start
 

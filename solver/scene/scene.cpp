@@ -237,10 +237,13 @@ void read_capsule(ObjectReader& r, Scene& s) {
   }
   s.C = r.number("C", 15.0, 0.0, 1e3, true);
   s.Re = r.number("Re", 0.05, 0.0, 10.0, true);
-  s.Ca = r.number("Ca", std::nullopt, 0.0, 10.0, true);
-  s.E_b = r.number("E_b", std::nullopt, 0.0, 10.0);
-  s.V = r.number("V", std::nullopt, 0.0, 100.0, true);
-  s.eta = r.number("eta", std::nullopt, 0.0, 1e3);
+  // With a physical block these four come from it (read_physical); NaN marks "not given".
+  const std::optional<double> from_physical =
+      r.has("physical") ? std::optional<double>(std::nan("")) : std::nullopt;
+  s.Ca = r.number("Ca", from_physical, 0.0, 10.0, true);
+  s.E_b = r.number("E_b", from_physical, 0.0, 10.0);
+  s.V = r.number("V", from_physical, 0.0, 100.0, true);
+  s.eta = r.number("eta", from_physical, 0.0, 1e3);
   s.G = r.number("G", 50.0, 0.0, 1e4, true);
   s.c0 = r.number("c0", 0.0, -10.0, 10.0);
   using enum ReferenceCase;
@@ -253,6 +256,57 @@ void read_capsule(ObjectReader& r, Scene& s) {
     s.reference_case = r.choice<ReferenceCase>("reference_case", none, {none});
   }
   s.volume_penalty = r.number("volume_penalty", 0.0, 0.0, 1e6);
+}
+
+// physical: a 3D cell in physical units, converted once to the groups (34)-(36) and the Reynolds
+// number the lattice runs at (solver/scene/physical_cell.hpp, docs/guide/physical_units.md).
+// A group the scene also gives must be the one the block gives (the canonical scene has both).
+void read_physical(ObjectReader& r, Scene& s) {
+  if (!r.has("physical")) return;
+  const json block = r.object("physical", true);
+  ObjectReader p(block, r.source(), "physical",
+                 {"radius_um", "shear_modulus_uN_per_m", "bending_modulus_J", "bending_modulus_kT", "temperature_K",
+                  "plasma_viscosity_mPa_s", "cytoplasm_viscosity_mPa_s", "membrane_viscosity_uN_s_per_m",
+                  "shear_rate_per_s", "density_kg_per_m3"});
+  if (s.dim != 3)
+    p.fail("", "physical units are for the 3D cell (a 2D capsule's moduli are per unit length of a ring)",
+           "no physical block in 2D");
+  PhysicalCell c;
+  c.radius_um = p.number("radius_um", std::nullopt, 0.0, 1e3, true);
+  c.shear_modulus_uN_per_m = p.number("shear_modulus_uN_per_m", std::nullopt, 0.0, 1e6, true);
+  if (p.has("bending_modulus_J") && p.has("bending_modulus_kT"))
+    p.fail("bending_modulus_kT", "the bending modulus is given twice", "bending_modulus_J or bending_modulus_kT");
+  c.bending_modulus_J = p.number("bending_modulus_J", 0.0, 0.0, 1e-12);
+  c.bending_modulus_kT = p.number("bending_modulus_kT", 0.0, 0.0, 1e8);
+  c.temperature_K = p.number("temperature_K", c.bending_modulus_kT > 0 ? std::nullopt : std::optional<double>(0.0),
+                             0.0, 1e4, true);
+  c.plasma_viscosity_mPa_s = p.number("plasma_viscosity_mPa_s", std::nullopt, 0.0, 1e6, true);
+  c.cytoplasm_viscosity_mPa_s = p.number("cytoplasm_viscosity_mPa_s", c.plasma_viscosity_mPa_s, 0.0, 1e6, true);
+  c.membrane_viscosity_uN_s_per_m = p.number("membrane_viscosity_uN_s_per_m", 0.0, 0.0, 1e6);
+  c.shear_rate_per_s = p.number("shear_rate_per_s", std::nullopt, 0.0, 1e7, true);
+  c.density_kg_per_m3 = p.number("density_kg_per_m3", 1000.0, 0.0, 1e5, true);
+  p.refuse_unknown();
+  const PhysicalGroups g = physical_groups(c, s.law, s.sls_viscosity);
+  const auto take = [&](const std::string& key, double& field, double derived, double lo, double hi, bool lo_open) {
+    const std::string range = std::string(lo_open ? "(" : "[") + fmt(lo) + ", " + fmt(hi) + "]";
+    if (!std::isfinite(derived) || (lo_open ? derived <= lo : derived < lo) || derived > hi)
+      p.fail("", "the cell gives " + key + " = " + fmt(derived) + ", outside the solver's range",
+             key + " in " + range + ": change the moduli, viscosities, radius or shear rate");
+    if (!std::isnan(field) && std::abs(field - derived) > 1e-12 * std::abs(derived))
+      r.fail(key, key + " = " + fmt(field) + " is not the physical block's " + fmt(derived),
+             "leave " + key + " out with a physical block, or give the value it gives");
+    field = derived;
+  };
+  take("Ca", s.Ca, g.Ca, 0.0, 10.0, true);
+  take("E_b", s.E_b, g.E_b, 0.0, 10.0, false);
+  take("V", s.V, g.V, 0.0, 100.0, true);
+  take("eta", s.eta, g.eta, 0.0, 1e3, false);
+  if (g.Re > 10.0)
+    p.fail("shear_rate_per_s", "the cell's own Reynolds number rho k a^2 / mu_a = " + fmt(g.Re) +
+                                   " is above the solver's range",
+           "rho k a^2 / mu_a <= 10");
+  s.Re = lattice_Re(g, s.Re);
+  s.physical = c;
 }
 
 // power_law: (102) and where it acts.
@@ -431,13 +485,15 @@ void read_protocol_and_output(ObjectReader& r, Scene& s) {
 Scene Scene::from_json(const json& j, const std::string& source) {
   ObjectReader r(j, source, "",
                  {"dim", "physics_version", "shape", "law", "C", "Re", "Ca", "E_b", "V", "eta", "G", "c0",
-                  "reference_case", "volume_penalty", "power_law", "conventions", "resolution", "protocol", "output"});
+                  "reference_case", "volume_penalty", "power_law", "conventions", "resolution", "protocol", "output",
+                  "physical"});
   Scene s;
   read_dim_and_version(r, j, s);
   const SceneDefaults defaults = scene_defaults(s.physics_version, s.dim);
   read_capsule(r, s);
-  read_power_law(r, s, defaults);
   read_conventions(r, s);
+  read_physical(r, s);
+  read_power_law(r, s, defaults);
   read_resolution(r, s, defaults);
   read_protocol_and_output(r, s);
   r.refuse_unknown();
@@ -520,6 +576,18 @@ json Scene::to_json() const {
     // The rule's name where a rule set it (its value follows from a and the delta), else the number.
     if (marker_inset_rule == MarkerInsetRule::given) j["resolution"]["marker_inset"] = marker_inset;
     else j["resolution"]["marker_inset"] = choice_name(marker_inset_rule);
+  }
+  if (physical) {
+    // Written only when given, so the ids of scenes without it stay; one bending key, the one given.
+    const PhysicalCell& c = *physical;
+    json& ph = j["physical"];
+    ph = {{"radius_um", c.radius_um}, {"shear_modulus_uN_per_m", c.shear_modulus_uN_per_m},
+          {"plasma_viscosity_mPa_s", c.plasma_viscosity_mPa_s}, {"cytoplasm_viscosity_mPa_s", c.cytoplasm_viscosity_mPa_s},
+          {"membrane_viscosity_uN_s_per_m", c.membrane_viscosity_uN_s_per_m}, {"shear_rate_per_s", c.shear_rate_per_s},
+          {"density_kg_per_m3", c.density_kg_per_m3}};
+    if (c.bending_modulus_kT > 0) ph["bending_modulus_kT"] = c.bending_modulus_kT;
+    else ph["bending_modulus_J"] = c.bending_modulus_J;
+    if (c.temperature_K > 0) ph["temperature_K"] = c.temperature_K;
   }
   j["protocol"] = {{"shear", phase_json(shear, true)}, {"recover", phase_json(recover, false)}};
   j["output"] = {{"interval_kt", output_interval_kt}, {"shapes_at_kt", shapes_at_kt},

@@ -4,11 +4,13 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "solver/ib/membrane_update.hpp"
 #include "solver/scene/choices.hpp"
+#include "solver/scene/physical_cell.hpp"
 #include "solver/scene/version.hpp"
 
 namespace capsule {
@@ -54,6 +56,9 @@ struct Scene {
   double c0 = 0;               // spontaneous curvature, units of 1/a
   ReferenceCase reference_case = ReferenceCase::none;  // 3D: none | A | B | C (Table 1)
   double volume_penalty = 0;   // K_v of (84), in units of E_s / a; 0 = off
+  // 3D: the cell in physical units, when the scene gave it so; Ca, E_b, V, eta and Re are then
+  // its groups (solver/scene/physical_cell.hpp), and times read in seconds as kt / k.
+  std::optional<PhysicalCell> physical;
   double power_law_K = 0;      // (102), dimensionless (gamma in units of k); 0 = off
   double power_law_n = 1;
   // Where the power-law viscosity acts (3D): fluid_shell: the text's (103)-(104), spread over

@@ -3,6 +3,8 @@
 // command-line errors (CLI11 returns 104-109 by default).
 #include <catch2/catch.hpp>
 
+#include "capsule_process.hpp"
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -13,31 +15,12 @@
 #include <nlohmann/json.hpp>
 
 namespace fs = std::filesystem;
+using capsule_test::quote;
+using capsule_test::Result;
+using capsule_test::run_capsule;
 
 namespace {
 
-struct Result {
-  int exit_code = -1;
-  std::string output;
-};
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-Result capsule(const std::string& args) {
-  Result r;
-  const std::string line = quote(std::string(CAPSULE_BINARY_DIR) + "/solver/capsule") + " " + args + " 2>&1 </dev/null";
-  FILE* pipe = ::popen(line.c_str(), "r");
-  std::array<char, 4096> buffer{};
-  std::size_t n;
-  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.output.append(buffer.data(), n);
-  const int status = ::pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
 
 std::size_t lines(const std::string& text) {
   std::size_t n = 0;
@@ -57,7 +40,7 @@ const std::string scene = quote(std::string(CAPSULE_SOURCE_DIR) + "/tests/data/s
 
 TEST_CASE("capsule -o naming a folder fails before the first step, in one line", "[capsule2d]") {
   const fs::path dir = scratch();
-  const Result r = capsule(scene + " -o " + quote(dir.string()) + " --quiet");
+  const Result r = run_capsule(scene + " -o " + quote(dir.string()) + " --quiet");
   INFO(r.output);
   CHECK(r.exit_code == 2);
   CHECK(lines(r.output) == 1);
@@ -69,7 +52,7 @@ TEST_CASE("capsule -o naming a folder fails before the first step, in one line",
 TEST_CASE("capsule -o in a missing folder prints one line naming it, no HDF5 stack", "[capsule2d]") {
   const fs::path dir = scratch();
   const fs::path out = dir / "no" / "such" / "m.h5";
-  const Result r = capsule(scene + " -o " + quote(out.string()) + " --quiet");
+  const Result r = run_capsule(scene + " -o " + quote(out.string()) + " --quiet");
   INFO(r.output);
   CHECK(r.exit_code == 2);
   CHECK(lines(r.output) == 1);
@@ -84,11 +67,11 @@ TEST_CASE("capsule check refuses a 2D power-law scene, as the run does", "[capsu
   nlohmann::json j = nlohmann::json::parse(in);
   j["power_law"] = {{"K", 0.1}, {"n", 0.64}};
   std::ofstream(dir / "p.json") << j.dump();
-  const Result check = capsule("check " + quote((dir / "p.json").string()));
+  const Result check = run_capsule("check " + quote((dir / "p.json").string()));
   INFO(check.output);
   CHECK(check.exit_code == 2);
   CHECK(check.output.find((dir / "p.json").string() + ": power_law.K: ") != std::string::npos);
-  const Result run = capsule(quote((dir / "p.json").string()) + " -o " + quote((dir / "p.h5").string()) + " --quiet");
+  const Result run = run_capsule(quote((dir / "p.json").string()) + " -o " + quote((dir / "p.h5").string()) + " --quiet");
   CHECK(run.exit_code == 2);
   CHECK_FALSE(fs::exists(dir / "p.h5"));
   fs::remove_all(dir);
@@ -101,28 +84,28 @@ TEST_CASE("capsule command-line errors exit 2, and --help documents the exit sta
                                  scene, std::string("check"), std::string("bench gpu"),
                                  std::string("/nonexistent/scene.json") + out}) {
     INFO("capsule " << args);
-    const Result r = capsule(args);
+    const Result r = run_capsule(args);
     INFO(r.output);
     CHECK(r.exit_code == 2);
   }
-  CHECK(capsule(scene + out + " --threads -1").output.find("must be a whole number from 0") != std::string::npos);
-  const Result help = capsule("--help");
+  CHECK(run_capsule(scene + out + " --threads -1").output.find("must be a whole number from 0") != std::string::npos);
+  const Result help = run_capsule("--help");
   CHECK(help.exit_code == 0);
   CHECK(help.output.find("Exit status: 0 complete") != std::string::npos);
   CHECK(help.output.find("3 the member ended unstable") != std::string::npos);
-  CHECK(capsule("check --help").output.find("Exit status:") != std::string::npos);
+  CHECK(run_capsule("check --help").output.find("Exit status:") != std::string::npos);
   fs::remove_all(dir);
 }
 
 TEST_CASE("capsule reference-bim writes a summary row and a series; bad options exit 2", "[capsule3d]") {
   const fs::path dir = scratch();
   const fs::path series = dir / "series.csv";
-  const Result r = capsule("reference-bim --ca 0.1 --level 1 --kt 0.2 --every 0.1 -o " + quote(series.string()));
+  const Result r = run_capsule("reference-bim --ca 0.1 --level 1 --kt 0.2 --every 0.1 -o " + quote(series.string()));
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   CHECK(r.output.rfind("level,vertices,Ca,law,", 0) == 0);
   CHECK(r.output.find("\n1,42,0.1,neo-hookean,") != std::string::npos);
-  CHECK(capsule("reference-bim --ca 0.1 --level 1 --kt 5 --steady 0.5 --steady-window 0.2").output.find(",yes,") != std::string::npos);
+  CHECK(run_capsule("reference-bim --ca 0.1 --level 1 --kt 5 --steady 0.5 --steady-window 0.2").output.find(",yes,") != std::string::npos);
   std::ifstream in(series);
   std::string header;
   std::getline(in, header);
@@ -132,7 +115,7 @@ TEST_CASE("capsule reference-bim writes a summary row and a series; bad options 
                                   std::string("reference-bim --ca 0.1 --law hooke"),
                                   std::string("reference-bim --ca 0.1 --level 9")}) {
     INFO("capsule " << args);
-    CHECK(capsule(args).exit_code == 2);
+    CHECK(run_capsule(args).exit_code == 2);
   }
   fs::remove_all(dir);
 }
@@ -140,7 +123,7 @@ TEST_CASE("capsule reference-bim writes a summary row and a series; bad options 
 TEST_CASE("capsule rigid-sphere writes a summary row and a series; bad options exit 2", "[capsule3d]") {
   const fs::path dir = scratch();
   const fs::path series = dir / "series.csv";
-  const Result r = capsule("rigid-sphere --a 2 --level 1 --domain 5 5 5 --kt 0.1 --every 0.05 -o " + quote(series.string()));
+  const Result r = run_capsule("rigid-sphere --a 2 --level 1 --domain 5 5 5 --kt 0.1 --every 0.05 -o " + quote(series.string()));
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   CHECK(r.output.rfind("a,marker_radius,level,nx,ny,nz,spin,kernel,precision,kt,torque,", 0) == 0);
@@ -153,7 +136,7 @@ TEST_CASE("capsule rigid-sphere writes a summary row and a series; bad options e
   for (const std::string& args : {std::string("rigid-sphere --a 1"), std::string("rigid-sphere --gain 0"),
                                   std::string("rigid-sphere --kernel gauss"), std::string("rigid-sphere --domain 10 10")}) {
     INFO("capsule " << args);
-    CHECK(capsule(args).exit_code == 2);
+    CHECK(run_capsule(args).exit_code == 2);
   }
   fs::remove_all(dir);
 }
@@ -161,7 +144,7 @@ TEST_CASE("capsule rigid-sphere writes a summary row and a series; bad options e
 TEST_CASE("capsule rigid-circle writes a summary row and a series; bad options exit 2", "[capsule2d]") {
   const fs::path dir = scratch();
   const fs::path series = dir / "series.csv";
-  const Result r = capsule("rigid-circle --a 3 --segments 32 --domain 5 5 --kt 0.1 --every 0.05 -o " + quote(series.string()));
+  const Result r = run_capsule("rigid-circle --a 3 --segments 32 --domain 5 5 --kt 0.1 --every 0.05 -o " + quote(series.string()));
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   CHECK(r.output.rfind("a,marker_radius,segments,nx,ny,spin,kernel,precision,kt,torque,", 0) == 0);
@@ -174,7 +157,7 @@ TEST_CASE("capsule rigid-circle writes a summary row and a series; bad options e
   for (const std::string& args : {std::string("rigid-circle --a 1"), std::string("rigid-circle --segments 8"),
                                   std::string("rigid-circle --kernel gauss"), std::string("rigid-circle --domain 10 10 8")}) {
     INFO("capsule " << args);
-    CHECK(capsule(args).exit_code == 2);
+    CHECK(run_capsule(args).exit_code == 2);
   }
   fs::remove_all(dir);
 }
@@ -186,7 +169,7 @@ TEST_CASE("capsule names a misspelt key with the key it is near, before any miss
   j["Eb"] = j["E_b"];
   j.erase("E_b");
   std::ofstream(dir / "eb.json") << j.dump();
-  const Result r = capsule("check " + quote((dir / "eb.json").string()));
+  const Result r = run_capsule("check " + quote((dir / "eb.json").string()));
   INFO(r.output);
   CHECK(r.exit_code == 2);
   CHECK(r.output.find("eb.json: Eb: unknown key, did you mean E_b?") != std::string::npos);
@@ -196,17 +179,17 @@ TEST_CASE("capsule names a misspelt key with the key it is near, before any miss
 
 TEST_CASE("capsule says why a scene cannot be opened, and that a campaign is not a scene", "[capsule2d]") {
   const fs::path dir = scratch();
-  const Result missing = capsule("check " + quote((dir / "none.json").string()));
+  const Result missing = run_capsule("check " + quote((dir / "none.json").string()));
   INFO(missing.output);
   CHECK(missing.exit_code == 2);
   CHECK(missing.output.find("cannot open the scene file: No such file or directory") != std::string::npos);
   // A name without .json: the file meant.
   std::ifstream in(std::string(CAPSULE_SOURCE_DIR) + "/tests/data/scenes/circle_quick_2d.json");
   std::ofstream(dir / "quick.json") << in.rdbuf();
-  const Result bare = capsule("check " + quote((dir / "quick").string()));
+  const Result bare = run_capsule("check " + quote((dir / "quick").string()));
   INFO(bare.output);
   CHECK(bare.output.find("did you mean " + (dir / "quick.json").string() + "?") != std::string::npos);
-  const Result campaign = capsule("check " + quote(std::string(CAPSULE_SOURCE_DIR) + "/campaigns/demo.json"));
+  const Result campaign = run_capsule("check " + quote(std::string(CAPSULE_SOURCE_DIR) + "/campaigns/demo.json"));
   INFO(campaign.output);
   CHECK(campaign.exit_code == 2);
   CHECK(campaign.output.find("this is a campaign file, not a scene") != std::string::npos);
@@ -215,26 +198,26 @@ TEST_CASE("capsule says why a scene cannot be opened, and that a campaign is not
 }
 
 TEST_CASE("capsule --version, examples in --help, and the subcommands through CLI11", "[capsule2d]") {
-  const Result version = capsule("--version");
+  const Result version = run_capsule("--version");
   INFO(version.output);
   CHECK(version.exit_code == 0);
   CHECK(version.output.rfind("capsule ", 0) == 0);
   CHECK(version.output.find("(physics version ") != std::string::npos);
-  const Result help = capsule("--help");
+  const Result help = run_capsule("--help");
   CHECK(help.output.find("Examples:") != std::string::npos);
   CHECK(help.output.find("capsule check tests/data/scenes/circle_quick_2d.json") != std::string::npos);
   // Every subcommand is listed by CLI11 and has its own --help with an example or its exit status.
-  for (const char* name : {"check", "version", "bench", "reference-bim", "rigid-sphere", "rigid-circle"}) {
+  for (const char* name : {"check", "version", "units", "bench", "reference-bim", "rigid-sphere", "rigid-circle"}) {
     const std::string sub = name;
     INFO(sub);
     CHECK(help.output.find("  " + sub) != std::string::npos);
-    const Result sub_help = capsule(sub + " --help");
+    const Result sub_help = run_capsule(sub + " --help");
     CHECK(sub_help.exit_code == 0);
     CHECK(sub_help.output.find("Exit status:") != std::string::npos);
   }
   // A subcommand's options belong to it: the run's -o is not taken by check.
-  CHECK(capsule("check " + scene + " --frob").exit_code == 2);
+  CHECK(run_capsule("check " + scene + " --frob").exit_code == 2);
   // `capsule version` stays JSON, as study run-member reads it.
-  const Result json = capsule("version");
+  const Result json = run_capsule("version");
   CHECK(nlohmann::json::parse(json.output).contains("physics_version"));
 }
