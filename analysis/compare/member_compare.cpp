@@ -106,6 +106,145 @@ struct Group {
   std::size_t case_rank = 0;
 };
 
+// Members that share a key within their campaign (e.g. repeated runs) are told apart by slug,
+// and so is every member with that key in every campaign, so that the slugs match across them.
+void break_ties(std::vector<std::vector<Member>>& members, const std::vector<std::string>& key_names) {
+  std::vector<const Member*> shared;
+  for (const auto& campaign : members)
+    for (std::size_t i = 0; i < campaign.size(); ++i)
+      for (std::size_t k = i + 1; k < campaign.size(); ++k)
+        if (same_key(campaign[i], campaign[k], key_names)) shared.push_back(&campaign[i]);
+  std::vector<Member*> tie;
+  for (auto& campaign : members)
+    for (auto& m : campaign)
+      if (std::any_of(shared.begin(), shared.end(), [&](const Member* s) { return same_key(*s, m, key_names); }))
+        tie.push_back(&m);
+  for (auto* m : tie) m->tiebreak = m->slug;
+}
+
+// The members matched across the campaigns, by case (first appearance), then by the key
+// parameters (NaN last), then by slug.
+std::vector<Group> match_members(const std::vector<std::vector<Member>>& members, const std::vector<std::string>& key_names) {
+  std::map<std::string, std::size_t> case_rank;
+  std::vector<Group> groups;
+  for (std::size_t c = 0; c < members.size(); ++c)
+    for (const auto& m : members[c]) {
+      case_rank.emplace(m.case_name, case_rank.size());
+      auto it = std::find_if(groups.begin(), groups.end(), [&](const Group& g) {
+        return !g.in[c] && same_key(*g.first, m, key_names);
+      });
+      if (it == groups.end()) {
+        groups.push_back({&m, std::vector<const Member*>(members.size(), nullptr), case_rank[m.case_name]});
+        it = groups.end() - 1;
+      }
+      it->in[c] = &m;
+    }
+  std::stable_sort(groups.begin(), groups.end(), [&](const Group& p, const Group& q) {
+    if (p.case_rank != q.case_rank) return p.case_rank < q.case_rank;
+    for (const auto& n : key_names) {
+      const double x = value_of(*p.first, n), y = value_of(*q.first, n);
+      if (same_value(x, y)) continue;
+      if (std::isnan(x) != std::isnan(y)) return std::isnan(y);
+      return x < y;
+    }
+    return p.first->tiebreak < q.first->tiebreak;
+  });
+  return groups;
+}
+
+// A matched member as the tables name it: its key parameters, and its slug where they do not tell it.
+std::string group_label(const Group& g, const std::vector<std::string>& key_names) {
+  std::string s;
+  for (const auto& n : key_names) {
+    const double v = value_of(*g.first, n);
+    s += (s.empty() ? "" : ", ") + n + " = " + (std::isnan(v) ? std::string("n/a") : format_number(v));
+  }
+  if (!g.first->tiebreak.empty() || s.empty()) s += (s.empty() ? "" : " ") + ("[" + g.first->slug + "]");
+  return s;
+}
+
+// A later campaign's time against the first's: the difference and whether the 95 % intervals
+// overlap (counted in the result).
+void against_first(const FitParameter* a, const FitParameter* b, std::vector<std::string>& row, MemberComparison& result) {
+  if (!a || !b) {
+    row.insert(row.end(), {"", ""});
+    return;
+  }
+  row.push_back(format_number(b->value - a->value));
+  if (!std::isfinite(a->ci_low) || !std::isfinite(a->ci_high) || !std::isfinite(b->ci_low) || !std::isfinite(b->ci_high)) {
+    row.push_back("n/a: no 95 % interval");
+    return;
+  }
+  const bool overlap = a->ci_low <= b->ci_high && b->ci_low <= a->ci_high;
+  ++result.compared;
+  if (!overlap) ++result.non_overlapping;
+  row.push_back(overlap ? "yes" : "NO");
+}
+
+// One fitted time of a matched member, a row of the times table (none when no campaign fitted it).
+void time_row(const Group& g, const std::string& label, const char* time, MemberComparison& result) {
+  bool made = false;
+  for (const auto* m : g.in)
+    if (m && m->fits.count(fit_key(time))) made = true;
+  if (!made) return;
+  std::vector<std::string> row{case_label(g.first->case_name), label, time};
+  std::vector<const FitParameter*> params;
+  for (const auto* m : g.in) {
+    const FitParameter* p = nullptr;
+    if (!m) {
+      row.push_back("absent");
+    } else {
+      const ColumnValue v = column_value(m->fits, time);
+      p = v.parameter;
+      row.push_back(p ? pm(p->value, p->half_width()) : "n/a: " + v.reason);
+    }
+    params.push_back(p);
+  }
+  for (std::size_t c = 1; c < g.in.size(); ++c) against_first(params[0], params[c], row, result);
+  result.times.rows.push_back(row);
+}
+
+void start_tables(const std::vector<CampaignFits>& campaigns, MemberComparison& result) {
+  result.times.title =
+      "Per-member fitted times k tau side by side (± = 95 % half-width; difference and overlap against the first "
+      "campaign)";
+  result.times.header = {"case", "member", "time"};
+  for (const auto& c : campaigns) result.times.header.push_back(c.name);
+  for (std::size_t c = 1; c < campaigns.size(); ++c) {
+    result.times.header.push_back("difference " + campaigns[c].name + " - " + campaigns[0].name);
+    result.times.header.push_back("95% overlap " + campaigns[c].name);
+  }
+  result.unmatched.title = "Members found in only some of the campaigns";
+  result.unmatched.header = {"case", "member", "found", "slug"};
+}
+
+// A matched member: a row of the unmatched table where some campaign lacks it; where two or more
+// hold it, its parameters that differ (outside the key) and a row per fitted time.
+void compare_group(const std::vector<CampaignFits>& campaigns, const Group& g, const std::vector<std::string>& key_names,
+                   std::set<std::string>& differing, MemberComparison& result) {
+  const std::string label = group_label(g, key_names);
+  std::vector<std::string> present;
+  std::string slugs;
+  for (std::size_t c = 0; c < campaigns.size(); ++c)
+    if (g.in[c]) {
+      present.push_back(campaigns[c].name);
+      slugs += (slugs.empty() ? "" : ", ") + campaigns[c].name + ": " + g.in[c]->slug;
+    }
+  if (present.size() < campaigns.size()) {
+    std::string found = "only in ";
+    for (std::size_t i = 0; i < present.size(); ++i) found += (i ? ", " : "") + present[i];
+    result.unmatched.rows.push_back({case_label(g.first->case_name), label, found, slugs});
+  }
+  if (present.size() < 2) return;
+  for (const auto* m : g.in) {
+    if (!m) continue;
+    for (const auto& [n, v] : m->parameters)
+      if (std::find(key_names.begin(), key_names.end(), n) == key_names.end() && !same_value(v, value_of(*g.first, n)))
+        differing.insert(n);
+  }
+  for (const char* time : k_times) time_row(g, label, time, result);
+}
+
 }  // namespace
 
 MemberComparison compare_members(const std::vector<CampaignFits>& campaigns) {
@@ -119,130 +258,11 @@ MemberComparison compare_members(const std::vector<CampaignFits>& campaigns) {
   }
   result.match_parameters.assign(names.begin(), names.end());
   const auto& key_names = result.match_parameters;
-
-  // Members that share a key within their campaign (e.g. repeated runs) are told apart by slug,
-  // and so is every member with that key in every campaign, so that the slugs match across them.
-  std::vector<const Member*> shared;
-  for (const auto& campaign : members)
-    for (std::size_t i = 0; i < campaign.size(); ++i)
-      for (std::size_t k = i + 1; k < campaign.size(); ++k)
-        if (same_key(campaign[i], campaign[k], key_names)) shared.push_back(&campaign[i]);
-  std::vector<Member*> tie;
-  for (auto& campaign : members)
-    for (auto& m : campaign)
-      if (std::any_of(shared.begin(), shared.end(), [&](const Member* s) { return same_key(*s, m, key_names); }))
-        tie.push_back(&m);
-  for (auto* m : tie) m->tiebreak = m->slug;
-
-  std::map<std::string, std::size_t> case_rank;
-  std::vector<Group> groups;
-  for (std::size_t c = 0; c < members.size(); ++c)
-    for (const auto& m : members[c]) {
-      case_rank.emplace(m.case_name, case_rank.size());
-      auto it = std::find_if(groups.begin(), groups.end(), [&](const Group& g) {
-        return !g.in[c] && same_key(*g.first, m, key_names);
-      });
-      if (it == groups.end()) {
-        groups.push_back({&m, std::vector<const Member*>(campaigns.size(), nullptr), case_rank[m.case_name]});
-        it = groups.end() - 1;
-      }
-      it->in[c] = &m;
-    }
-  // By case (first appearance), then by the key parameters (NaN last), then by slug.
-  std::stable_sort(groups.begin(), groups.end(), [&](const Group& p, const Group& q) {
-    if (p.case_rank != q.case_rank) return p.case_rank < q.case_rank;
-    for (const auto& n : key_names) {
-      const double x = value_of(*p.first, n), y = value_of(*q.first, n);
-      if (same_value(x, y)) continue;
-      if (std::isnan(x) != std::isnan(y)) return std::isnan(y);
-      return x < y;
-    }
-    return p.first->tiebreak < q.first->tiebreak;
-  });
-
-  auto label = [&](const Group& g) {
-    std::string s;
-    for (const auto& n : key_names) {
-      const double v = value_of(*g.first, n);
-      s += (s.empty() ? "" : ", ") + n + " = " + (std::isnan(v) ? std::string("n/a") : format_number(v));
-    }
-    if (!g.first->tiebreak.empty() || s.empty()) s += (s.empty() ? "" : " ") + ("[" + g.first->slug + "]");
-    return s;
-  };
-
-  result.times.title =
-      "Per-member fitted times k tau side by side (± = 95 % half-width; difference and overlap against the first "
-      "campaign)";
-  result.times.header = {"case", "member", "time"};
-  for (const auto& c : campaigns) result.times.header.push_back(c.name);
-  for (std::size_t c = 1; c < campaigns.size(); ++c) {
-    result.times.header.push_back("difference " + campaigns[c].name + " - " + campaigns[0].name);
-    result.times.header.push_back("95% overlap " + campaigns[c].name);
-  }
-  result.unmatched.title = "Members found in only some of the campaigns";
-  result.unmatched.header = {"case", "member", "found", "slug"};
-
+  break_ties(members, key_names);
+  const std::vector<Group> groups = match_members(members, key_names);
+  start_tables(campaigns, result);
   std::set<std::string> differing;
-  for (const auto& g : groups) {
-    std::vector<std::string> present;
-    std::string slugs;
-    for (std::size_t c = 0; c < campaigns.size(); ++c)
-      if (g.in[c]) {
-        present.push_back(campaigns[c].name);
-        slugs += (slugs.empty() ? "" : ", ") + campaigns[c].name + ": " + g.in[c]->slug;
-      }
-    if (present.size() < campaigns.size()) {
-      std::string found = "only in ";
-      for (std::size_t i = 0; i < present.size(); ++i) found += (i ? ", " : "") + present[i];
-      result.unmatched.rows.push_back({case_label(g.first->case_name), label(g), found, slugs});
-    }
-    if (present.size() < 2) continue;
-
-    for (std::size_t c = 0; c < campaigns.size(); ++c) {
-      if (!g.in[c]) continue;
-      for (const auto& [n, v] : g.in[c]->parameters)
-        if (std::find(key_names.begin(), key_names.end(), n) == key_names.end() &&
-            !same_value(v, value_of(*g.first, n)))
-          differing.insert(n);
-    }
-    for (const char* time : k_times) {
-      bool made = false;
-      for (const auto* m : g.in)
-        if (m && m->fits.count(fit_key(time))) made = true;
-      if (!made) continue;
-      std::vector<std::string> row{case_label(g.first->case_name), label(g), time};
-      std::vector<const FitParameter*> params;
-      for (const auto* m : g.in) {
-        const FitParameter* p = nullptr;
-        if (!m) {
-          row.push_back("absent");
-        } else {
-          const ColumnValue v = column_value(m->fits, time);
-          p = v.parameter;
-          row.push_back(p ? pm(p->value, p->half_width()) : "n/a: " + v.reason);
-        }
-        params.push_back(p);
-      }
-      for (std::size_t c = 1; c < campaigns.size(); ++c) {
-        const FitParameter *a = params[0], *b = params[c];
-        if (!a || !b) {
-          row.insert(row.end(), {"", ""});
-          continue;
-        }
-        row.push_back(format_number(b->value - a->value));
-        if (!std::isfinite(a->ci_low) || !std::isfinite(a->ci_high) || !std::isfinite(b->ci_low) ||
-            !std::isfinite(b->ci_high)) {
-          row.push_back("n/a: no 95 % interval");
-          continue;
-        }
-        const bool overlap = a->ci_low <= b->ci_high && b->ci_low <= a->ci_high;
-        ++result.compared;
-        if (!overlap) ++result.non_overlapping;
-        row.push_back(overlap ? "yes" : "NO");
-      }
-      result.times.rows.push_back(row);
-    }
-  }
+  for (const auto& g : groups) compare_group(campaigns, g, key_names, differing, result);
   result.differing_parameters.assign(differing.begin(), differing.end());
   return result;
 }

@@ -41,9 +41,13 @@ std::vector<ClaimText> parse_claim_texts(const std::string& markdown) {
   return out;
 }
 
-const ClaimText& claim_text(const std::string& key) {
+const std::vector<ClaimText>& claim_texts() {
   static const std::vector<ClaimText> texts = parse_claim_texts(k_claims_markdown);
-  for (const auto& t : texts)
+  return texts;
+}
+
+const ClaimText& claim_text(const std::string& key) {
+  for (const auto& t : claim_texts())
     if (t.key == key) return t;
   throw std::logic_error("analysis/dissertation/claims.md has no claim '" + key + "'");
 }

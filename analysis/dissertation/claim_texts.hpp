@@ -22,6 +22,9 @@ struct ClaimText {
 // the line when a line is missing, out of order or unknown, or a key is given twice.
 std::vector<ClaimText> parse_claim_texts(const std::string& markdown);
 
+// The claims of the embedded claims.md, in the order of the file (the order of the text).
+const std::vector<ClaimText>& claim_texts();
+
 // The claim `key` of the embedded claims.md. Throws std::logic_error for an unknown key.
 const ClaimText& claim_text(const std::string& key);
 

@@ -1,55 +1,47 @@
 #include "analysis/dissertation/claims.hpp"
 
-#include "analysis/dissertation/claims/chapters.hpp"
-
+#include <map>
 #include <stdexcept>
+
+#include "analysis/dissertation/claim_texts.hpp"
+#include "analysis/dissertation/claims/registry.hpp"
 
 namespace capsule::analysis {
 
 using namespace claims;
 
+namespace {
+
+// The registry and claims.md agree (every rule has words, every worded claim a rule), or a
+// std::logic_error says where they do not.
+void check_registry() {
+  std::vector<std::string> registered, worded;
+  for (const auto& c : claim_registry()) registered.push_back(c.key);
+  for (const auto& t : claim_texts()) worded.push_back(t.key);
+  std::string problems;
+  for (const auto& m : registry_mismatches(registered, worded)) problems += (problems.empty() ? "" : "; ") + m;
+  if (!problems.empty()) throw std::logic_error("the claim registry and claims.md disagree: " + problems);
+}
+
+}  // namespace
+
 std::vector<ClaimResult> evaluate_claims(const DissertationResults& res) {
+  check_registry();
+  std::map<std::string, const RegisteredClaim*> rules;
+  for (const auto& c : claim_registry()) rules[c.key] = &c;
   std::vector<ClaimResult> out;
   res.take_campaigns_read();
-  // Each row with whether a campaign its rule read ships some point at two levels.
-  const auto push = [&](ClaimResult r) {
-    for (const std::string& name : res.take_campaigns_read()) r.several_levels = r.several_levels || res.campaign(name).several_levels;
-    res.take_campaigns_read();
-    out.push_back(std::move(r));
-  };
-  // A rule judged once, and a rule judged for the circle and the sphere (cases 2d, 3d).
-  const auto once = [&](ClaimResult (*rule)(const DissertationResults&)) { push(rule(res)); };
-  const auto per_case = [&](ClaimResult (*rule)(const DissertationResults&, const std::string&)) {
-    for (const char* c : {"2d", "3d"}) push(rule(res, c));
-  };
-  once(claim_2_fig7), once(claim_2_mesh), once(claim_2_G);
-  once(claim_3_1), once(claim_3_1_overshoot);
-  per_case(claim_3_2_proportional), per_case(claim_3_2_modest), per_case(claim_3_2_constant);
-  once(claim_3_2_small_Ca);
-  per_case(claim_3_2_response_normalized), per_case(claim_3_2_response_slows), once(claim_3_2_cleaner);
-  for (const char* c : {"2d", "3d"}) push(claim_3_3_falls(res, c, "recovery.k_tau_r"));
-  push(claim_3_3_falls(res, "3d", "response.k_tau_s"));
-  once(claim_3_3_slight), per_case(claim_3_3_no_bending), per_case(claim_3_3_stiff), per_case(claim_3_3_deformation);
-  per_case(claim_3_4_linear), per_case(claim_3_4_small_V), per_case(claim_3_4_recovery_more), per_case(claim_3_4_deformation);
-  once(claim_3_5_2d), once(claim_3_5_3d), once(claim_3_5_small_eta), once(claim_3_5_fig20);
-  push(claim_orders(res, "4.1.1 orders", "two_phase", -1, 1, missed_stop_in(res)));
-  once(claim_4_1_1_fit_quality), once(claim_4_1_1_worst_fits), once(claim_4_1_1_R1), once(claim_4_1_1_R2), once(claim_4_1_1_R1_weak);
-  once(claim_4_1_1_R2_eta), once(claim_4_1_1_dip_rise), once(claim_4_1_1_no_bending), once(claim_4_1_1_phase_angle);
-  once(claim_4_1_2_monotone), once(claim_4_1_2_direction), once(claim_4_1_2_r2);
-  push(claim_orders(res, "4.1.2 orders", "double_exponential", -1, 0, outside_tumbling_ensemble_in(res)));
-  once(claim_4_1_2_Ca), once(claim_4_1_2_E_b_V), once(claim_4_1_2_eta), once(claim_4_1_2_fig38);
-  once(claim_4_1_2_fig38_bending);
-  once(claim_4_2_A), once(claim_4_2_A_plateau), once(claim_4_2_c0), once(claim_4_2_B), once(claim_4_2_C);
-  once(claim_4_2_C_steady), once(claim_4_2_drift);
-  once(claim_5_1_1_fit_quality), once(claim_5_1_1_similar), once(claim_5_1_1_ratio_trends);
-  once(claim_5_1_1_ratios), once(claim_5_1_1_r2_rows);
-  push(claim_5_1_2(res, "ch5_bilinear_ca005", 0.2, "Fig. 55"));
-  push(claim_5_1_2(res, "ch5_bilinear_ca005_eb", 1.0, "Fig. 56"));
-  once(claim_5_1_3_ratios_differ);
-  push(claim_5_2_pairs(res, true));
-  push(claim_5_2_pairs(res, false));
-  once(claim_5_2_inclination), once(claim_5_2_settled), once(claim_5_2_n), once(claim_5_2_gamma_range), once(claim_5_2_mesh),
-      once(claim_5_2_2_initial), once(claim_5_2_gamma), once(claim_5_2_fig66);
+  for (const ClaimText& text : claim_texts()) {
+    for (const RowRule& rule : rules.at(text.key)->rows) {
+      ClaimResult r = rule(res);
+      if (r.key != text.key)
+        throw std::logic_error("the rule registered as claim '" + text.key + "' judged the claim '" + r.key + "'");
+      // Whether a campaign the row's rule read ships some point at two levels.
+      for (const std::string& name : res.take_campaigns_read()) r.several_levels = r.several_levels || res.campaign(name).several_levels;
+      res.take_campaigns_read();
+      out.push_back(std::move(r));
+    }
+  }
   return out;
 }
 

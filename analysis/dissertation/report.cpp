@@ -51,12 +51,9 @@ Table campaign_table(const DissertationResults& results) {
   return t;
 }
 
-}  // namespace
-
-std::string dissertation_markdown(const DissertationResults& results, const std::string& results_label,
-                                  DissertationSummary* summary, const std::string& link_base) {
-  DissertationSummary s;
-  const auto rows = compare_table2_rows(results);
+// The Table 2 coefficients counted: overlapping, disjoint, unknown; extrapolated pass / fail and
+// moving toward / away from the text.
+void count_table2(const std::vector<Table2RowComparison>& rows, DissertationSummary& s) {
   for (const auto& row : rows) {
     if (!row.found) {
       s.coefficients_unknown += 3;
@@ -72,7 +69,11 @@ std::string dissertation_markdown(const DissertationResults& results, const std:
       }
     }
   }
-  const auto claims = evaluate_claims_at_two_levels(results);
+}
+
+// The claim rows counted by verdict and convergence, the claims by verdict and by whether the text
+// passes its own rule.
+void count_claims(const std::vector<ClaimResult>& claims, DissertationSummary& s) {
   for (const auto& c : claims) {
     ++(c.levels == Levels::converged       ? s.rows_converged
        : c.levels == Levels::not_converged ? s.rows_not_converged
@@ -82,16 +83,17 @@ std::string dissertation_markdown(const DissertationResults& results, const std:
     else if (c.verdict == Verdict::differs) ++s.differs;
     else ++s.cannot_tell;
   }
-  const auto verdicts = claim_verdicts(claims);
-  for (const auto& [key, v] : verdicts)
+  for (const auto& [key, v] : claim_verdicts(claims))
     ++(v == ClaimVerdict::agrees    ? s.claims_agree
        : v == ClaimVerdict::differs ? s.claims_differ
        : v == ClaimVerdict::in_part ? s.claims_in_part
                                     : s.claims_cannot_tell);
-  s.linked_figures = linked_figure_count(figure_index(), results.results_dir());
   for (const auto& [key, t] : claim_text_passes(claims))
     ++(t == TextPasses::yes ? s.text_passes : t == TextPasses::no ? s.text_fails : s.text_no_numbers);
+}
 
+// The title, the bottom line and the chapter tables with the words they use.
+std::string opening_markdown(const std::vector<ClaimResult>& claims, const DissertationSummary& s, const std::string& results_label) {
   std::string md;
   md += "# The dissertation beside this toolkit\n\n";
   md += "\"Modeling and Simulation of Shape Changes of Red Blood Cells in Shear Flow\" (ODU 2014) against the "
@@ -121,12 +123,23 @@ std::string dissertation_markdown(const DissertationResults& results, const std:
         "the two amplitudes of (90) are fitted freely (**free amplitudes**; (90) fixes it at 1/2).\n"
         "- **C1 ... C" + std::to_string(known_deviations().size()) + "**: the known causes of disagreement (below); a claim that differs with no cause linked is "
         "*unexplained*.\n\n";
+  return md;
+}
+
+std::string figures_section_markdown(const DissertationResults& results, const DissertationSummary& s, const std::string& link_base) {
+  std::string md;
   md += "## Figures\n\n";
   md += "The dissertation's figures that a shipped campaign's report regenerates with the same axes and quantities "
         "(" + std::to_string(s.linked_figures) + " toolkit figures linked; the table is "
         "analysis/dissertation/figures.md). The toolkit draws one panel per member where the text overlays "
         "several.\n\n";
   md += figures_markdown(results.results_dir(), link_base) + "\n";
+  return md;
+}
+
+// The counts of the summary; `claims` and `rows` the numbers of claims and of claim rows.
+std::string summary_markdown(const DissertationSummary& s, std::size_t claims, std::size_t rows) {
+  std::string md;
   md += "## Summary\n\n";
   md += "Generated from the shipped campaign results (`<campaign>/report/fits.json` and the member files it names). "
         "A campaign not yet run, or a member whose fit or file is missing, gives *cannot tell* with what is missing, "
@@ -136,15 +149,15 @@ std::string dissertation_markdown(const DissertationResults& results, const std:
         "cannot tell (*not converged*, both levels' numbers given). A campaign shipped at one level says so (*one level*).\n\n";
   md += "- Claims: " + std::to_string(s.claims_agree) + " agree, " + std::to_string(s.claims_differ) + " differ, " +
         std::to_string(s.claims_in_part) + " hold in part, " + std::to_string(s.claims_cannot_tell) + " cannot tell (of " +
-        std::to_string(verdicts.size()) + " claims; in part: the rows of one claim, such as its circle and its sphere, "
+        std::to_string(claims) + " claims; in part: the rows of one claim, such as its circle and its sphere, "
         "disagree, or some cannot tell).\n";
   md += "- Rows of the claims table: " + std::to_string(s.agrees) + " agree, " + std::to_string(s.differs) + " differ, " +
-        std::to_string(s.cannot_tell) + " cannot tell (of " + std::to_string(claims.size()) + ").\n";
+        std::to_string(s.cannot_tell) + " cannot tell (of " + std::to_string(rows) + ").\n";
   md += "- Convergence of the rows: " + std::to_string(s.rows_converged) + " converged (the same verdict at the two finest "
         "levels), " + std::to_string(s.rows_not_converged) + " not converged (cannot tell), " + std::to_string(s.rows_one_level) +
         " on campaigns shipped at one level, " + std::to_string(s.rows_not_judged) + " not judged at the finest level.\n";
   md += "- The text passes its own rule: " + std::to_string(s.text_passes) + " yes, " + std::to_string(s.text_fails) +
-        " no, " + std::to_string(s.text_no_numbers) + " no numbers (of " + std::to_string(verdicts.size()) + " claims).\n";
+        " no, " + std::to_string(s.text_no_numbers) + " no numbers (of " + std::to_string(claims) + " claims).\n";
   md += "- Table 2 coefficients, statistical 95 % intervals only: " + std::to_string(s.coefficients_overlap) +
         " overlap, " + std::to_string(s.coefficients_disjoint) + " do not, " + std::to_string(s.coefficients_unknown) +
         " cannot tell (of 18).\n";
@@ -154,8 +167,12 @@ std::string dissertation_markdown(const DissertationResults& results, const std:
         std::to_string(s.coefficients_extrapolated_pass + s.coefficients_extrapolated_fail) + " with an extrapolation); from the "
         "next coarser level to the finest " + std::to_string(s.coefficients_toward) + " move toward the text, " +
         std::to_string(s.coefficients_away) + " away.\n\n";
-  md += campaign_table(results).to_markdown() + "\n";
-  // One section: its title, what it shows, and its table.
+  return md;
+}
+
+// The validation, Table 2 and ratio sections: each its title, what it shows, and its table.
+std::string tables_markdown(const DissertationResults& results, const std::vector<Table2RowComparison>& rows) {
+  std::string md;
   const auto section = [&md](const std::string& title, const std::string& intro, const Table& table) {
     md += "## " + title + "\n\n" + intro + "\n\n" + table.to_markdown() + "\n";
   };
@@ -182,6 +199,25 @@ std::string dissertation_markdown(const DissertationResults& results, const std:
           "when fits.json carries it (delta method, times Student's t with N - 3 degrees of freedom), else the same "
           "half-width rule; the last column says which.",
           table2_ratios(rows));
+  return md;
+}
+
+}  // namespace
+
+std::string dissertation_markdown(const DissertationResults& results, const std::string& results_label,
+                                  DissertationSummary* summary, const std::string& link_base) {
+  DissertationSummary s;
+  const auto rows = compare_table2_rows(results);
+  count_table2(rows, s);
+  const auto claims = evaluate_claims_at_two_levels(results);
+  count_claims(claims, s);
+  s.linked_figures = linked_figure_count(figure_index(), results.results_dir());
+
+  std::string md = opening_markdown(claims, s, results_label);
+  md += figures_section_markdown(results, s, link_base);
+  md += summary_markdown(s, claim_verdicts(claims).size(), claims.size());
+  md += campaign_table(results).to_markdown() + "\n";
+  md += tables_markdown(results, rows);
   md += "## Claims of Chapters 2-5\n\n";
   md += "Each claim in detail, the target of the chapter tables' links. Each claim of the text is a rule with a numeric criterion, judged from the fitted times (and, where it is "
         "about a curve, the member files) of the campaign named; the numbers say by how much it holds or fails.\n\n";

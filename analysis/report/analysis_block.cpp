@@ -231,6 +231,116 @@ std::vector<PublishedSpec> parse_published(const nlohmann::json& p, const std::s
   return out;
 }
 
+// The fits of /fits: known, each once.
+std::vector<std::string> parse_fits(const nlohmann::json& j, const std::string& where) {
+  std::vector<std::string> out = string_array(j, where, "/fits", false);
+  std::set<std::string> seen;
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const auto& f = out[i];
+    if (std::find(known_fits().begin(), known_fits().end(), f) == known_fits().end())
+      fail(where, "/fits/" + std::to_string(i),
+           "expected one of response, recovery, two_phase, double_exponential, double_exponential_free; got \"" +
+               f + "\"");
+    if (!seen.insert(f).second) fail(where, "/fits/" + std::to_string(i), "\"" + f + "\" listed twice");
+  }
+  return out;
+}
+
+// Name -> JSON pointer into the canonical scene.
+std::map<std::string, std::string> parse_parameters(const nlohmann::json& p, const std::string& where) {
+  std::map<std::string, std::string> out;
+  if (!p.is_object()) fail(where, "/parameters", "expected an object of name -> JSON pointer");
+  for (const auto& [name, pointer] : p.items()) {
+    const std::string path = "/parameters/" + name;
+    const std::string text = a_string(pointer, where, path);
+    try {
+      nlohmann::json::json_pointer check(text);
+      (void)check;
+    } catch (const nlohmann::json::exception&) {
+      fail(where, path, "expected a JSON pointer such as \"/Ca\"; got \"" + text + "\"");
+    }
+    if (text.empty() || text[0] != '/') fail(where, path, "expected a JSON pointer starting with /");
+    out[name] = text;
+  }
+  return out;
+}
+
+// One entry of /tables: its name names files, its columns are fitted times of the block's fits.
+TableSpec parse_table(const nlohmann::json& e, const std::vector<std::string>& fits, std::set<std::string>& names,
+                      const std::string& where, const std::string& path) {
+  static const std::regex name_pattern("[A-Za-z0-9_-]+");
+  if (!e.is_object()) fail(where, path, "expected an object with name, x, columns[, normalise]");
+  only_keys(e, {"name", "x", "columns", "normalise"}, where, path);
+  for (const char* key : {"name", "x", "columns"})
+    if (!e.contains(key)) fail(where, path + "/" + key, "required key missing");
+  TableSpec spec;
+  spec.name = a_string(e["name"], where, path + "/name");
+  if (!std::regex_match(spec.name, name_pattern))
+    fail(where, path + "/name", "expected letters, digits, _ or - (it names files)");
+  if (spec.name == "member_fits" || spec.name == "bilinear" || spec.name == "artificial_viscosity")
+    fail(where, path + "/name", "\"" + spec.name + "\" is reserved for a report file");
+  if (!names.insert(spec.name).second) fail(where, path + "/name", "table name used twice");
+  spec.x = a_string(e["x"], where, path + "/x");
+  spec.columns = string_array(e["columns"], where, path + "/columns", true);
+  for (std::size_t c = 0; c < spec.columns.size(); ++c)
+    check_column(spec.columns[c], fits, where, path + "/columns/" + std::to_string(c));
+  if (e.contains("normalise")) {
+    spec.normalise = a_string(e["normalise"], where, path + "/normalise");
+    if (spec.normalise != "none" && spec.normalise != "tau_e" && spec.normalise != "tau_v")
+      fail(where, path + "/normalise", "expected \"none\", \"tau_e\" or \"tau_v\"");
+  }
+  return spec;
+}
+
+std::vector<TableSpec> parse_tables(const nlohmann::json& t, const std::vector<std::string>& fits, const std::string& where) {
+  if (!t.is_array()) fail(where, "/tables", "expected an array of table objects");
+  std::vector<TableSpec> out;
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < t.size(); ++i) out.push_back(parse_table(t[i], fits, names, where, "/tables/" + std::to_string(i)));
+  return out;
+}
+
+BilinearSpec parse_bilinear(const nlohmann::json& b, const std::vector<std::string>& fits, const std::string& where) {
+  if (!b.is_object()) fail(where, "/bilinear", "expected an object with targets[, V_base, ladder, spacing, assumed_order]");
+  only_keys(b, {"targets", "V_base", "ladder", "spacing", "assumed_order"}, where, "/bilinear");
+  if (!b.contains("targets")) fail(where, "/bilinear/targets", "required key missing");
+  BilinearSpec spec;
+  spec.targets = string_array(b["targets"], where, "/bilinear/targets", true);
+  for (std::size_t c = 0; c < spec.targets.size(); ++c)
+    check_column(spec.targets[c], fits, where, "/bilinear/targets/" + std::to_string(c));
+  if (b.contains("V_base")) {
+    if (!b["V_base"].is_number()) fail(where, "/bilinear/V_base", "expected a number");
+    spec.V_base = b["V_base"].get<double>();
+  }
+  if (b.contains("ladder")) {
+    spec.ladder = a_dotted_key(b["ladder"], where, "/bilinear/ladder");
+    spec.spacing = ladder_spacing_of(b, spec.ladder, where, "/bilinear");
+    spec.assumed_order = an_assumed_order(b, where, "/bilinear");
+  } else if (b.contains("spacing") || b.contains("assumed_order")) {
+    fail(where, b.contains("spacing") ? "/bilinear/spacing" : "/bilinear/assumed_order",
+         "only with /bilinear/ladder (the resolution key the grid is run at)");
+  }
+  return spec;
+}
+
+// One ladder object, or an array of them (e.g. one in resolution.a, one in resolution.mesh_level).
+std::vector<LadderSpec> parse_ladders(const nlohmann::json& l, const std::vector<std::string>& fits, const std::string& where) {
+  std::vector<LadderSpec> out;
+  std::set<std::string> names;
+  auto add = [&](const nlohmann::json& e, const std::string& path) {
+    out.push_back(parse_ladder(e, fits, where, path));
+    if (!names.insert(out.back().name).second)
+      fail(where, path + "/name", "ladder name \"" + out.back().name + "\" used twice");
+  };
+  if (l.is_array()) {
+    if (l.empty()) fail(where, "/ladder", "expected a ladder object or a non-empty array of them");
+    for (std::size_t i = 0; i < l.size(); ++i) add(l[i], "/ladder/" + std::to_string(i));
+  } else {
+    add(l, "/ladder");
+  }
+  return out;
+}
+
 }  // namespace
 
 const std::vector<std::string>& marker_quantities() {
@@ -273,110 +383,11 @@ AnalysisBlock parse_analysis_block(const nlohmann::json& block, const std::strin
   only_keys(block,
             {"fits", "parameters", "tables", "bilinear", "ladder", "accuracy", "stability", "published", "figures"},
             where, "");
-
-  if (block.contains("fits")) {
-    out.fits = string_array(block["fits"], where, "/fits", false);
-    std::set<std::string> seen;
-    for (std::size_t i = 0; i < out.fits.size(); ++i) {
-      const auto& f = out.fits[i];
-      if (std::find(known_fits().begin(), known_fits().end(), f) == known_fits().end())
-        fail(where, "/fits/" + std::to_string(i),
-             "expected one of response, recovery, two_phase, double_exponential, double_exponential_free; got \"" +
-                 f + "\"");
-      if (!seen.insert(f).second) fail(where, "/fits/" + std::to_string(i), "\"" + f + "\" listed twice");
-    }
-  }
-
-  if (block.contains("parameters")) {
-    const auto& p = block["parameters"];
-    if (!p.is_object()) fail(where, "/parameters", "expected an object of name -> JSON pointer");
-    for (const auto& [name, pointer] : p.items()) {
-      const std::string path = "/parameters/" + name;
-      const std::string text = a_string(pointer, where, path);
-      try {
-        nlohmann::json::json_pointer check(text);
-        (void)check;
-      } catch (const nlohmann::json::exception&) {
-        fail(where, path, "expected a JSON pointer such as \"/Ca\"; got \"" + text + "\"");
-      }
-      if (text.empty() || text[0] != '/') fail(where, path, "expected a JSON pointer starting with /");
-      out.parameters[name] = text;
-    }
-  }
-
-  if (block.contains("tables")) {
-    const auto& t = block["tables"];
-    if (!t.is_array()) fail(where, "/tables", "expected an array of table objects");
-    std::set<std::string> names;
-    static const std::regex name_pattern("[A-Za-z0-9_-]+");
-    for (std::size_t i = 0; i < t.size(); ++i) {
-      const std::string path = "/tables/" + std::to_string(i);
-      const auto& e = t[i];
-      if (!e.is_object()) fail(where, path, "expected an object with name, x, columns[, normalise]");
-      only_keys(e, {"name", "x", "columns", "normalise"}, where, path);
-      for (const char* key : {"name", "x", "columns"})
-        if (!e.contains(key)) fail(where, path + "/" + key, "required key missing");
-      TableSpec spec;
-      spec.name = a_string(e["name"], where, path + "/name");
-      if (!std::regex_match(spec.name, name_pattern))
-        fail(where, path + "/name", "expected letters, digits, _ or - (it names files)");
-      if (spec.name == "member_fits" || spec.name == "bilinear" || spec.name == "artificial_viscosity")
-        fail(where, path + "/name", "\"" + spec.name + "\" is reserved for a report file");
-      if (!names.insert(spec.name).second) fail(where, path + "/name", "table name used twice");
-      spec.x = a_string(e["x"], where, path + "/x");
-      spec.columns = string_array(e["columns"], where, path + "/columns", true);
-      for (std::size_t c = 0; c < spec.columns.size(); ++c)
-        check_column(spec.columns[c], out.fits, where, path + "/columns/" + std::to_string(c));
-      if (e.contains("normalise")) {
-        spec.normalise = a_string(e["normalise"], where, path + "/normalise");
-        if (spec.normalise != "none" && spec.normalise != "tau_e" && spec.normalise != "tau_v")
-          fail(where, path + "/normalise", "expected \"none\", \"tau_e\" or \"tau_v\"");
-      }
-      out.tables.push_back(spec);
-    }
-  }
-
-  if (block.contains("bilinear")) {
-    const auto& b = block["bilinear"];
-    if (!b.is_object()) fail(where, "/bilinear", "expected an object with targets[, V_base, ladder, spacing, assumed_order]");
-    only_keys(b, {"targets", "V_base", "ladder", "spacing", "assumed_order"}, where, "/bilinear");
-    if (!b.contains("targets")) fail(where, "/bilinear/targets", "required key missing");
-    BilinearSpec spec;
-    spec.targets = string_array(b["targets"], where, "/bilinear/targets", true);
-    for (std::size_t c = 0; c < spec.targets.size(); ++c)
-      check_column(spec.targets[c], out.fits, where, "/bilinear/targets/" + std::to_string(c));
-    if (b.contains("V_base")) {
-      if (!b["V_base"].is_number()) fail(where, "/bilinear/V_base", "expected a number");
-      spec.V_base = b["V_base"].get<double>();
-    }
-    if (b.contains("ladder")) {
-      spec.ladder = a_dotted_key(b["ladder"], where, "/bilinear/ladder");
-      spec.spacing = ladder_spacing_of(b, spec.ladder, where, "/bilinear");
-      spec.assumed_order = an_assumed_order(b, where, "/bilinear");
-    } else if (b.contains("spacing") || b.contains("assumed_order")) {
-      fail(where, b.contains("spacing") ? "/bilinear/spacing" : "/bilinear/assumed_order",
-           "only with /bilinear/ladder (the resolution key the grid is run at)");
-    }
-    out.bilinear = spec;
-  }
-
-  if (block.contains("ladder")) {
-    // One ladder object, or an array of them (e.g. one in resolution.a, one in resolution.mesh_level).
-    const auto& l = block["ladder"];
-    std::set<std::string> names;
-    auto add = [&](const nlohmann::json& e, const std::string& path) {
-      out.ladders.push_back(parse_ladder(e, out.fits, where, path));
-      if (!names.insert(out.ladders.back().name).second)
-        fail(where, path + "/name", "ladder name \"" + out.ladders.back().name + "\" used twice");
-    };
-    if (l.is_array()) {
-      if (l.empty()) fail(where, "/ladder", "expected a ladder object or a non-empty array of them");
-      for (std::size_t i = 0; i < l.size(); ++i) add(l[i], "/ladder/" + std::to_string(i));
-    } else {
-      add(l, "/ladder");
-    }
-  }
-
+  if (block.contains("fits")) out.fits = parse_fits(block["fits"], where);
+  if (block.contains("parameters")) out.parameters = parse_parameters(block["parameters"], where);
+  if (block.contains("tables")) out.tables = parse_tables(block["tables"], out.fits, where);
+  if (block.contains("bilinear")) out.bilinear = parse_bilinear(block["bilinear"], out.fits, where);
+  if (block.contains("ladder")) out.ladders = parse_ladders(block["ladder"], out.fits, where);
   if (block.contains("accuracy")) out.accuracy = parse_accuracy(block["accuracy"], out.fits, out.ladders, where);
   if (block.contains("stability")) out.stability = parse_stability(block["stability"], where);
   if (block.contains("published")) out.published = parse_published(block["published"], where);

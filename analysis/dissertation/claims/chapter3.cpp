@@ -1,6 +1,6 @@
 // The claims of the dissertation's Chapter 3 (the circle and the sphere), each a rule with a stated numeric
 // criterion (claims/support.hpp).
-#include "analysis/dissertation/claims/chapters.hpp"
+#include "analysis/dissertation/claims/registry.hpp"
 #include "analysis/dissertation/claims/support.hpp"
 
 namespace capsule::analysis::claims {
@@ -364,6 +364,27 @@ ClaimResult claim_3_5_small_eta(const DissertationResults& res) {
     if (enough) parts.add(rise[1] >= factor * rise[0], bare_time(column) + " rise over eta <= 4: " + text);
   }
   return parts.finish(r);
+}
+
+// This file's claims under their keys in claims.md, each with its rows (claims/registry.hpp).
+ClaimList chapter3_claims() {
+  return {once("3.1 R2", claim_3_1),
+          once("3.1 overshoot", claim_3_1_overshoot),
+          per_case("3.2 proportional", claim_3_2_proportional),
+          per_case("3.2 modest", claim_3_2_modest),
+          {"3.3 falls",
+           {[](const DissertationResults& res) { return claim_3_3_falls(res, "2d", "recovery.k_tau_r"); },
+            [](const DissertationResults& res) { return claim_3_3_falls(res, "3d", "recovery.k_tau_r"); },
+            [](const DissertationResults& res) { return claim_3_3_falls(res, "3d", "response.k_tau_s"); }}},
+          once("3.3 slight", claim_3_3_slight),
+          per_case("3.3 no bending", claim_3_3_no_bending),
+          per_case("3.3 stiff", claim_3_3_stiff),
+          per_case("3.4 linear", claim_3_4_linear),
+          per_case("3.4 small V", claim_3_4_small_V),
+          per_case("3.4 recovery more affected", claim_3_4_recovery_more),
+          once("3.5 2d", claim_3_5_2d),
+          once("3.5 3d", claim_3_5_3d),
+          once("3.5 small eta", claim_3_5_small_eta)};
 }
 
 }  // namespace capsule::analysis::claims

@@ -1,7 +1,7 @@
 // The claims of the dissertation's Chapter 3 on the times normalized by a timescale of the
 // capsule: tau/tau_e over Ca (Fig. 16) and tau/tau_e over V beside tau/tau_v over eta (Fig. 20),
 // each a rule with a stated numeric criterion (claims/support.hpp).
-#include "analysis/dissertation/claims/chapters.hpp"
+#include "analysis/dissertation/claims/registry.hpp"
 #include "analysis/dissertation/claims/support.hpp"
 
 namespace capsule::analysis::claims {
@@ -148,6 +148,13 @@ ClaimResult claim_3_5_fig20(const DissertationResults& res) {
                                                     " over eta (factor " + num(factor) + ")");
   }
   return parts.finish(r);
+}
+
+// This file's claims under their keys in claims.md, each with its rows (claims/registry.hpp).
+ClaimList chapter3_normalized_claims() {
+  return {per_case("3.2 constant", claim_3_2_constant), once("3.2 small Ca", claim_3_2_small_Ca),
+          per_case("3.2 response normalized", claim_3_2_response_normalized), once("3.2 cleaner", claim_3_2_cleaner),
+          once("3.5 Fig. 20", claim_3_5_fig20)};
 }
 
 }  // namespace capsule::analysis::claims

@@ -1,6 +1,6 @@
 // The claims of the dissertation's Chapter 3 on how the times' growth and the deformation itself
 // change along a sweep (Secs. 3.2-3.4), each a rule with a stated numeric criterion (claims/support.hpp).
-#include "analysis/dissertation/claims/chapters.hpp"
+#include "analysis/dissertation/claims/registry.hpp"
 #include "analysis/dissertation/claims/support.hpp"
 
 namespace capsule::analysis::claims {
@@ -61,6 +61,12 @@ ClaimResult claim_3_3_deformation(const DissertationResults& res, const std::str
 // than a capsule with a larger V".
 ClaimResult claim_3_4_deformation(const DissertationResults& res, const std::string& case_name) {
   return deformation_falls(res, "3.4 deformation", case_name, "V");
+}
+
+// This file's claims under their keys in claims.md, each with its rows (claims/registry.hpp).
+ClaimList chapter3_trends_claims() {
+  return {per_case("3.2 response slows", claim_3_2_response_slows), per_case("3.3 deformation", claim_3_3_deformation),
+          per_case("3.4 deformation", claim_3_4_deformation)};
 }
 
 }  // namespace capsule::analysis::claims

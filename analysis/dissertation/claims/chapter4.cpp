@@ -1,6 +1,6 @@
 // The claims of the dissertation's Chapter 4 (the biconcave capsule), each a rule with a stated numeric
 // criterion (claims/support.hpp).
-#include "analysis/dissertation/claims/chapters.hpp"
+#include "analysis/dissertation/claims/registry.hpp"
 #include "analysis/dissertation/document_links.hpp"
 #include "analysis/dissertation/claims/support.hpp"
 
@@ -441,6 +441,31 @@ ClaimResult claim_4_2_C_steady(const DissertationResults& res) {
   };
   if (judge_curves(res, *c, "C", parts, true, {}, swing) == 0 && parts.why.empty()) part_missing(parts.why, "no case C member");
   return parts.finish(r);
+}
+
+// This file's claims under their keys in claims.md, each with its rows (claims/registry.hpp).
+ClaimList chapter4_claims() {
+  return {{"4.1.1 orders",
+           {[](const DissertationResults& res) {
+             return claim_orders(res, "4.1.1 orders", "two_phase", -1, 1, missed_stop_in(res));
+           }}},
+          {"4.1.2 orders",
+           {[](const DissertationResults& res) {
+             return claim_orders(res, "4.1.2 orders", "double_exponential", -1, 0, outside_tumbling_ensemble_in(res));
+           }}},
+          once("4.1.1 R1", claim_4_1_1_R1),
+          once("4.1.1 R2", claim_4_1_1_R2),
+          once("4.1.1 no bending", claim_4_1_1_no_bending),
+          once("4.1.1 dip and rise", claim_4_1_1_dip_rise),
+          once("4.1.1 worst fits", claim_4_1_1_worst_fits),
+          once("4.1.2 direction", claim_4_1_2_direction),
+          once("4.1.2 R2", claim_4_1_2_r2),
+          once("4.2 A", claim_4_2_A),
+          once("4.2 B", claim_4_2_B),
+          once("4.2 C", claim_4_2_C),
+          once("4.2 A plateau", claim_4_2_A_plateau),
+          once("4.2 c0", claim_4_2_c0),
+          once("4.2 C steady", claim_4_2_C_steady)};
 }
 
 }  // namespace capsule::analysis::claims

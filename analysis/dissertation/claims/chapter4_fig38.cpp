@@ -1,7 +1,7 @@
 // The claims of the dissertation's Sec. 4.1.2 on Fig. 38's tumbling capsule (Ca 0.4, E_b 0.05,
 // V 5, eta 0, stopped at theta = -pi/3): its first recovery time and how its bending moment falls
 // in that first phase, each a rule with a stated numeric criterion (claims/support.hpp).
-#include "analysis/dissertation/claims/chapters.hpp"
+#include "analysis/dissertation/claims/registry.hpp"
 #include "analysis/dissertation/claims/support.hpp"
 
 namespace capsule::analysis::claims {
@@ -81,6 +81,11 @@ ClaimResult claim_4_1_2_fig38_bending(const DissertationResults& res) {
       base->slug + ": mean |m| " + num(m_stop) + " at the stop (kt " + num(t_stop) + "), " + num(m_1) + " at kt_stop + 1: falls by " +
           num(100 * fall) + " %");
   return r;
+}
+
+// This file's claims under their keys in claims.md, each with its rows (claims/registry.hpp).
+ClaimList chapter4_fig38_claims() {
+  return {once("4.1.2 Fig. 38", claim_4_1_2_fig38), once("4.1.2 Fig. 38 bending", claim_4_1_2_fig38_bending)};
 }
 
 }  // namespace capsule::analysis::claims

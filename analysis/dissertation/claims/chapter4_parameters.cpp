@@ -1,7 +1,7 @@
 // The claims of the dissertation's Chapter 4 on how the two recovery times of the biconcave capsule
 // depend on the parameters (Figs. 25-28 tank-treading, Figs. 33-36 tumbling) and on how well
 // (87)-(88) fit, each a rule with a stated numeric criterion (claims/support.hpp).
-#include "analysis/dissertation/claims/chapters.hpp"
+#include "analysis/dissertation/claims/registry.hpp"
 #include "analysis/dissertation/claims/support.hpp"
 
 namespace capsule::analysis::claims {
@@ -184,6 +184,18 @@ ClaimResult claim_4_1_2_monotone(const DissertationResults& res) {
   });
   if (n < 3) part_missing(parts.why, std::to_string(n) + " ensemble members with a recovery, need 3");
   return parts.finish(r);
+}
+
+// This file's claims under their keys in claims.md, each with its rows (claims/registry.hpp).
+ClaimList chapter4_parameters_claims() {
+  return {once("4.1.1 fit quality", claim_4_1_1_fit_quality),
+          once("4.1.1 R1 weak", claim_4_1_1_R1_weak),
+          once("4.1.1 R2 eta", claim_4_1_1_R2_eta),
+          once("4.1.2 Ca", claim_4_1_2_Ca),
+          once("4.1.2 E_b and V", claim_4_1_2_E_b_V),
+          once("4.1.2 eta", claim_4_1_2_eta),
+          once("4.1.1 phase angle", claim_4_1_1_phase_angle),
+          once("4.1.2 monotone", claim_4_1_2_monotone)};
 }
 
 }  // namespace capsule::analysis::claims

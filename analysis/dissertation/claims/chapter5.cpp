@@ -2,7 +2,7 @@
 // criterion (claims/support.hpp).
 #include <limits>
 
-#include "analysis/dissertation/claims/chapters.hpp"
+#include "analysis/dissertation/claims/registry.hpp"
 #include "analysis/dissertation/claims/support.hpp"
 
 namespace capsule::analysis::claims {
@@ -559,6 +559,21 @@ ClaimResult claim_5_2_fig66(const DissertationResults& res) {
   }
   set(r, n1_not_least == 0 && widest <= 0.1, text);
   return r;
+}
+
+// This file's claims under their keys in claims.md, each with its rows (claims/registry.hpp).
+ClaimList chapter5_claims() {
+  return {{"5.1.2 V*",
+           {[](const DissertationResults& res) { return claim_5_1_2(res, "ch5_bilinear_ca005", 0.2, "Fig. 55"); },
+            [](const DissertationResults& res) { return claim_5_1_2(res, "ch5_bilinear_ca005_eb", 1.0, "Fig. 56"); }}},
+          {"5.2.1 initial", {[](const DissertationResults& res) { return claim_5_2_pairs(res, true); }}},
+          {"5.2.1 steady", {[](const DissertationResults& res) { return claim_5_2_pairs(res, false); }}},
+          once("5.2.1 n", claim_5_2_n),
+          once("5.2.1 inclination", claim_5_2_inclination),
+          once("5.2.1 gamma range", claim_5_2_gamma_range),
+          once("5.2 mesh", claim_5_2_mesh),
+          once("5.2.2 gamma", claim_5_2_gamma),
+          once("5.2.2 Fig. 66", claim_5_2_fig66)};
 }
 
 }  // namespace capsule::analysis::claims

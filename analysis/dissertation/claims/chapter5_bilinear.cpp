@@ -5,7 +5,7 @@
 #include "analysis/dissertation/table2.hpp"
 #include "analysis/dissertation/table2_reference.hpp"
 #include "analysis/dissertation/claims/bilinear_rules.hpp"
-#include "analysis/dissertation/claims/chapters.hpp"
+#include "analysis/dissertation/claims/registry.hpp"
 #include "analysis/dissertation/claims/support.hpp"
 
 namespace capsule::analysis::claims {
@@ -266,6 +266,16 @@ ClaimResult claim_5_1_3_ratios_differ(const DissertationResults& res) {
   }
   text.to(r);
   return parts.finish(r);
+}
+
+// This file's claims under their keys in claims.md, each with its rows (claims/registry.hpp).
+ClaimList chapter5_bilinear_claims() {
+  return {once("5.1.1 similar", claim_5_1_1_similar),
+          once("5.1.1 ratio trends", claim_5_1_1_ratio_trends),
+          once("5.1.1 fit quality", claim_5_1_1_fit_quality),
+          once("5.1.1 ratios", claim_5_1_1_ratios),
+          once("5.1.1 R2 rows", claim_5_1_1_r2_rows),
+          once("5.1.3 ratios differ", claim_5_1_3_ratios_differ)};
 }
 
 }  // namespace capsule::analysis::claims

@@ -1,7 +1,7 @@
 // The claims of the dissertation's Secs. 5.2.1-5.2.2 on the shape of the power-law capsule's D_xy
 // over time: a settled ellipsoid in shear, the same initial deformation as Kelvin-Voigt in
 // oscillatory shear; each a rule with a stated numeric criterion (claims/support.hpp).
-#include "analysis/dissertation/claims/chapters.hpp"
+#include "analysis/dissertation/claims/registry.hpp"
 #include "analysis/dissertation/claims/support.hpp"
 #include "analysis/dissertation/document_links.hpp"
 
@@ -84,6 +84,11 @@ ClaimResult claim_5_2_2_initial(const DissertationResults& res) {
   const double spread = relative_spread(first);
   set(r, spread <= bound, "peak D_xy in the first period: " + text + "; spread " + num(spread));
   return r;
+}
+
+// This file's claims under their keys in claims.md, each with its rows (claims/registry.hpp).
+ClaimList chapter5_shapes_claims() {
+  return {once("5.2.1 settled", claim_5_2_settled), once("5.2.2 initial", claim_5_2_2_initial)};
 }
 
 }  // namespace capsule::analysis::claims

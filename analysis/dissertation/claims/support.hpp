@@ -2,7 +2,7 @@
 // What every claim of the dissertation comparison is built from: a claim's text (claims.md) and
 // campaign, the members of a case as a series of (parameter, fitted time), the checks that turn
 // missing members into "cannot tell", and the members whose shear stop never came. Each chapter's claims are in
-// chapter2.cpp ... chapter5.cpp beside this file, declared in chapters.hpp.
+// chapter2.cpp ... chapter5.cpp beside this file, registered at the end of each (registry.hpp).
 #include <algorithm>
 #include <cmath>
 #include <functional>
