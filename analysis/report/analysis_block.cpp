@@ -286,8 +286,9 @@ TableSpec parse_table(const nlohmann::json& e, const std::vector<std::string>& f
     check_column(spec.columns[c], fits, where, path + "/columns/" + std::to_string(c));
   if (e.contains("normalise")) {
     spec.normalise = a_string(e["normalise"], where, path + "/normalise");
-    if (spec.normalise != "none" && spec.normalise != "tau_e" && spec.normalise != "tau_v")
-      fail(where, path + "/normalise", "expected \"none\", \"tau_e\" or \"tau_v\"");
+    if (spec.normalise != "none" && spec.normalise != "tau_e" && spec.normalise != "tau_v" &&
+        spec.normalise != "seconds")
+      fail(where, path + "/normalise", "expected \"none\", \"tau_e\", \"tau_v\" or \"seconds\"");
   }
   return spec;
 }

@@ -14,7 +14,7 @@ struct TableSpec {
   std::string name;                  // file stem
   std::string x;                     // swept scene parameter
   std::vector<std::string> columns;  // "<fit>.<time>", e.g. "response.k_tau_s"
-  std::string normalise = "none";    // "none" | "tau_e" | "tau_v"
+  std::string normalise = "none";    // "none" | "tau_e" | "tau_v" | "seconds"
 };
 
 struct BilinearSpec {

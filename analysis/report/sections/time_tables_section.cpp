@@ -13,9 +13,19 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Normalisation factor of a time for a member: k tau / (Ca V) (tau_e) or k tau / (Ca eta) (tau_v).
+// Normalisation factor of a time for a member: k tau / (Ca V) (tau_e), k tau / (Ca eta) (tau_v),
+// or k (seconds: tau in s for a cell given in physical units, docs/guide/physical_units.md).
 double normaliser(const MemberAnalysis& m, const std::string& normalise, std::string& why) {
   if (normalise == "none") return 1.0;
+  if (normalise == "seconds") {
+    const nlohmann::json* physical =
+        m.scene.is_object() && m.scene.contains("physical") ? &m.scene["physical"] : nullptr;
+    if (!physical || !physical->contains("shear_rate_per_s") || !(*physical)["shear_rate_per_s"].is_number()) {
+      why = "no time in seconds: the scene gives no cell in physical units";
+      return k_nan;
+    }
+    return (*physical)["shear_rate_per_s"].get<double>();
+  }
   const std::string other = normalise == "tau_e" ? "V" : "eta";
   for (const std::string& name : {std::string("Ca"), other})
     if (m.missing.count(name)) {
@@ -37,9 +47,10 @@ struct TableSeries {  // for the figure of a table
 Table time_table(const TableSpec& spec, const std::vector<MemberAnalysis>& members,
                  std::map<std::string, std::map<std::string, TableSeries>>& series) {
   Table t;
-  const std::string unit = spec.normalise == "tau_e"   ? "tau / tau_e = k tau / (Ca V)"
-                           : spec.normalise == "tau_v" ? "tau / tau_v = k tau / (Ca eta)"
-                                                       : "k tau";
+  const std::string unit = spec.normalise == "tau_e"     ? "tau / tau_e = k tau / (Ca V)"
+                           : spec.normalise == "tau_v"   ? "tau / tau_v = k tau / (Ca eta)"
+                           : spec.normalise == "seconds" ? "tau in seconds = k tau / k"
+                                                         : "k tau";
   t.title = spec.name + ": " + unit + " against " + spec.x + " (95 % intervals, Student's t)";
   t.header = {"case", spec.x, "member"};
   for (const auto& c : spec.columns) {
@@ -110,9 +121,10 @@ class TimeTablesSection : public ReportSection {
       outputs.fits["tables"].push_back(
           {{"name", spec.name}, {"x", spec.x}, {"columns", spec.columns}, {"normalise", spec.normalise}});
       nlohmann::json ft{{"name", spec.name}, {"x", spec.x}};
-      ft["ylabel"] = spec.normalise == "tau_e"   ? "$\\tau/\\tau_e$"
-                     : spec.normalise == "tau_v" ? "$\\tau/\\tau_v$"
-                                                 : "$k\\tau$";
+      ft["ylabel"] = spec.normalise == "tau_e"     ? "$\\tau/\\tau_e$"
+                     : spec.normalise == "tau_v"   ? "$\\tau/\\tau_v$"
+                     : spec.normalise == "seconds" ? "$\\tau$ (s)"
+                                                   : "$k\\tau$";
       ft["cases"] = nlohmann::json::object();
       for (const auto& [c, cols] : series) {
         nlohmann::json cj{{"columns", nlohmann::json::object()}};

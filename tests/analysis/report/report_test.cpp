@@ -257,3 +257,41 @@ TEST_CASE("write_report on a campaign with no member files says so instead of fa
   CHECK_THAT(csv[1], EndsWith("no members to fit"));
   CHECK(nlohmann::json::parse(slurp(tmp.path / "report" / "fits.json"))["members"].empty());
 }
+
+TEST_CASE("a time table in seconds divides k tau by the physical cell's shear rate; a member without one says why", "[analysis]") {
+  TempDir tmp("seconds");
+  ReportRequest req;
+  req.campaign_name = "cells";
+  req.campaign_file = "cells.json";
+  req.out_dir = (tmp.path / "cells" / "report").string();
+  req.analysis = {{"fits", {"recovery"}},
+                  {"tables", {{{"name", "recovery_s"}, {"x", "Ca"}, {"columns", {"recovery.k_tau_r"}}, {"normalise", "seconds"}}}},
+                  {"figures", false}};
+  for (double Ca : {0.05, 0.1}) {
+    SyntheticMember m;
+    m.Ca = Ca;
+    m.k_tau_r = 0.6;
+    const std::string slug = Ca == 0.05 ? "physical" : "plain";
+    const std::string path = (tmp.path / "cells" / "members" / slug / "member.h5").string();
+    capsule::analysis::testing::write_member(path, m);
+    nlohmann::json scene = scene_of(m);
+    if (Ca == 0.05) scene["physical"] = {{"shear_rate_per_s", 200.0}, {"radius_um", 2.82}};
+    req.members.push_back({"id" + slug, slug, path, "cell", scene});
+  }
+  write_report(req);
+  const fs::path out(req.out_dir);
+  const auto csv = lines(slurp(out / "tables/recovery_s.csv"));
+  REQUIRE(csv.size() == 3);
+  CHECK_THAT(slurp(out / "tables/recovery_s.md"), Contains("tau in seconds = k tau / k"));
+  // k tau_r = 0.6 (fitted within 1e-3) at k = 200 1/s: 3 ms.
+  const std::string physical_row = csv[1];
+  INFO(physical_row);
+  REQUIRE_THAT(physical_row, StartsWith("cell,0.05,physical,"));
+  const double seconds = std::stod(physical_row.substr(std::string("cell,0.05,physical,").size()));
+  CHECK(seconds == Approx(0.6 / 200).epsilon(2e-3));
+  CHECK_THAT(csv[2], StartsWith("cell,0.1,plain,,no time in seconds: the scene gives no cell in physical units"));
+  CHECK_THROWS_WITH(validate_analysis_block({{"fits", {"recovery"}},
+                                             {"tables", {{{"name", "t"}, {"x", "Ca"}, {"columns", {"recovery.k_tau_r"}}, {"normalise", "s"}}}}},
+                                            "c.json"),
+                    Contains("expected \"none\", \"tau_e\", \"tau_v\" or \"seconds\""));
+}
