@@ -9,7 +9,7 @@
 #include "solver/io/member_file.hpp"
 #include "solver/scene/scene.hpp"
 #include "solver/scene/version.hpp"
-#include "study/report/analysis_commands.hpp"
+#include "study/commands/analysis_commands.hpp"
 #include "study/campaign/campaign_error.hpp"
 #include "study/state/campaign_owner.hpp"
 #include "study/run/campaign_runner.hpp"

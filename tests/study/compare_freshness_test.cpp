@@ -2,7 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include "study/state/campaign_survey.hpp"
-#include "study/report/report_freshness.hpp"
+#include "study/commands/report_freshness.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace capsule::study;

@@ -1,4 +1,4 @@
-#include "study/report/analysis_commands.hpp"
+#include "study/commands/analysis_commands.hpp"
 
 #include <fcntl.h>
 #include <stdio.h>
@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "study/state/exit_status.hpp"
-#include "study/report/report_freshness.hpp"
+#include "study/commands/report_freshness.hpp"
 
 #include "analysis/compare/campaign_compare.hpp"
 #include "analysis/dissertation/table2_compare.hpp"

@@ -1,4 +1,4 @@
-#include "study/report/report_freshness.hpp"
+#include "study/commands/report_freshness.hpp"
 
 namespace capsule::study {
 
