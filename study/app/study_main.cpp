@@ -16,7 +16,7 @@
 #include "study/state/campaign_survey.hpp"
 #include "study/state/exit_status.hpp"
 #include "study/campaign/campaign_files.hpp"
-#include "study/run/member_run.hpp"
+#include "study/run/member_job.hpp"
 #include "study/run/provenance.hpp"
 #include "study/campaign/member_selection.hpp"
 #include "study/plan/plan_table.hpp"
@@ -104,7 +104,7 @@ int main_body(int argc, char** argv) {
                   "runs the cheap level of a resolution ladder first)");
   run->add_option("--results", results_dir, "results folder")->capture_default_str();
 
-  MemberRunRequest member_request;
+  MemberJobRequest member_request;
   auto* run_member = app.add_subcommand(
       "run-member", "run one member folder as every engine does (the generated run_member.sh execs it): its lock, "
                     "a complete member left alone, capsule's output appended to capsule.log, signals passed on");
@@ -218,7 +218,7 @@ int main_body(int argc, char** argv) {
   }
   run_request.allow_dirty = run_request.allow_dirty || allow_dirty_from_environment();
   slurm_options.allow_dirty = slurm_options.allow_dirty || allow_dirty_from_environment();
-  if (*run_member) return run_one_member(member_request, std::cerr);
+  if (*run_member) return run_member_job(member_request, std::cerr);
   if (*run) {
     run_request.results_dir = results_dir;
     run_request.progress_bar = ::isatty(STDOUT_FILENO) != 0;

@@ -1,12 +1,12 @@
 // A capsule binary rebuilt while a campaign runs would give its later members another code
 // version than the earlier ones (or a -dirty one): study run records the binary's version when
 // it starts, the wrapper hands it to run-member, and run-member starts no member with a binary
-// that now reports another (study/run/member_run.hpp, step 3).
+// that now reports another (study/run/member_job.hpp, step 3).
 #include <catch2/catch.hpp>
 
 #include <nlohmann/json.hpp>
 
-#include "study/run/member_run.hpp"
+#include "study/run/member_job.hpp"
 #include "study/run/shell_quote.hpp"
 #include "study/state/campaign_survey.hpp"
 #include "tests/study/study_test_support.hpp"

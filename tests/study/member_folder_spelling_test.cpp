@@ -1,9 +1,9 @@
 // A member folder has one identity whatever the spelling of its path: `study run-member DIR/`
 // is `study run-member DIR`, and the member's id comes from its scene.json, never from the
-// folder's name (study/run/member_run.hpp).
+// folder's name (study/run/member_job.hpp).
 #include <catch2/catch.hpp>
 
-#include "study/run/member_run.hpp"
+#include "study/run/member_job.hpp"
 #include "study/run/shell_quote.hpp"
 #include "study/state/campaign_survey.hpp"
 #include "tests/study/study_test_support.hpp"

@@ -1,5 +1,5 @@
 // A member runs at most once at a time and never after it is complete, whichever engine starts
-// it (study/run/member_lock.hpp, study/run/member_run.hpp); a stop by signal leaves a restart point that
+// it (study/run/member_lock.hpp, study/run/member_job.hpp); a stop by signal leaves a restart point that
 // the next run continues from.
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-#include "study/run/member_run.hpp"
+#include "study/run/member_job.hpp"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -86,7 +86,7 @@ std::string member_id_from_scene(const fs::path& member_dir) {
   return id;
 }
 
-int run_one_member(const MemberRunRequest& request, std::ostream& log) {
+int run_member_job(const MemberJobRequest& request, std::ostream& log) {
   const fs::path member_dir = normal_member_dir(request.member_dir);
   const MemberPaths paths = member_paths_in(member_dir);
   const std::string name = member_dir.filename().string();

@@ -1,5 +1,5 @@
 #pragma once
-// `study run-member MEMBER_DIR THREADS`: one member, as every engine runs it (GNU Parallel here
+// `study run-member MEMBER_DIR THREADS`: the job of one member, as every engine runs it (GNU Parallel here
 // or over SSH, a Slurm array task; the generated run_member.sh execs it):
 //   0. reads the member's id from its scene.json (never from the spelling of the folder's name:
 //      "DIR/" and DIR are one member) and refuses a folder whose name does not end in it;
@@ -31,7 +31,7 @@ namespace capsule::study {
 // run-member's exit status when the capsule binary's code version is not the run's (step 3).
 inline constexpr int kExitBinaryChanged = 3;
 
-struct MemberRunRequest {
+struct MemberJobRequest {
   std::filesystem::path member_dir;
   int threads = 1;
   std::filesystem::path capsule_binary;
@@ -46,6 +46,7 @@ std::filesystem::path normal_member_dir(const std::filesystem::path& dir);
 // not end in it (a folder spelled or renamed into another member's).
 std::string member_id_from_scene(const std::filesystem::path& member_dir);
 
-int run_one_member(const MemberRunRequest& request, std::ostream& log);
+// Runs the member as above; returns run-member's exit status.
+int run_member_job(const MemberJobRequest& request, std::ostream& log);
 
 }  // namespace capsule::study
