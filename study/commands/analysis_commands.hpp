@@ -10,6 +10,10 @@
 
 namespace capsule::study {
 
+// The help of `--legacy-member-files` (report, thesis): io::accept_files_without_content_hash.
+inline constexpr const char* legacy_member_files_help =
+    "also read member files without a content hash (written before it existed); their content cannot be checked";
+
 struct ReportOptions {
   bool partial = false;  // write the report even when some member files cannot be read (PARTIAL.md names them)
 };
