@@ -11,6 +11,7 @@
 #include <cstring>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -86,14 +87,14 @@ std::string member_id_from_scene(const fs::path& member_dir) {
   return id;
 }
 
-int run_member_job(const MemberJobRequest& request, std::ostream& log) {
-  const fs::path member_dir = normal_member_dir(request.member_dir);
-  const MemberPaths paths = member_paths_in(member_dir);
-  const std::string name = member_dir.filename().string();
-  if (const std::string link = linked_member_folder(member_dir); !link.empty())
-    throw std::runtime_error("study run-member: " + link);
-  const std::string id = member_id_from_scene(member_dir);
-  const MemberLock lock(member_dir);
+namespace {
+
+// Why the member is left alone before anything of it is touched: another live process runs it,
+// it is complete or unreadable (exit 0), or the capsule binary now reports another code version
+// than the run began with (exit kExitBinaryChanged). nullopt when it runs.
+std::optional<int> left_alone(const MemberJobRequest& request, const MemberPaths& paths, const std::string& id,
+                              const MemberLock& lock, std::ostream& log) {
+  const std::string name = paths.dir.filename().string();
   if (!lock.held()) {
     log << "study run-member: " << name << " is running on " << lock.owner().host << " (pid " << lock.owner().pid
         << ", since " << lock.owner().started << "): left alone\n";
@@ -107,45 +108,38 @@ int run_member_job(const MemberJobRequest& request, std::ostream& log) {
   }
   // The binary may have been rebuilt since the run began: its members would record another
   // code version than the campaign's others (or a -dirty one). Nothing of the member is touched.
-  if (!request.expected_code_version.empty()) {
-    std::string now;
-    try {
-      now = capsule_code_version(request.capsule_binary);
-    } catch (const std::exception& e) {
-      now = std::string("unknown (") + e.what() + ")";
-    }
-    if (now != request.expected_code_version) {
-      const std::string why = "study run-member: " + name + " not started: the capsule binary " +
-                              request.capsule_binary.string() + " now reports code version " + now +
-                              ", the run began with " + request.expected_code_version +
-                              " (rebuilt meanwhile?); run `study run` again to start it with this binary\n";
-      log << why;
-      std::ofstream(paths.log, std::ios::app) << why;
-      return kExitBinaryChanged;
-    }
+  if (request.expected_code_version.empty()) return std::nullopt;
+  std::string now;
+  try {
+    now = capsule_code_version(request.capsule_binary);
+  } catch (const std::exception& e) {
+    now = std::string("unknown (") + e.what() + ")";
   }
-  std::error_code ec;
-  fs::remove(paths.exit_status, ec);
-  fs::remove(paths.partial, ec);
-  remove_leftover_temporaries(member_dir);
+  if (now == request.expected_code_version) return std::nullopt;
+  const std::string why = "study run-member: " + name + " not started: the capsule binary " +
+                          request.capsule_binary.string() + " now reports code version " + now +
+                          ", the run began with " + request.expected_code_version +
+                          " (rebuilt meanwhile?); run `study run` again to start it with this binary\n";
+  log << why;
+  std::ofstream(paths.log, std::ios::app) << why;
+  return kExitBinaryChanged;
+}
 
-  const std::string started = utc_now_iso8601();
-  const double t0 = now_seconds();
-  const int log_fd = ::open(paths.log.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
-  if (log_fd < 0) throw std::runtime_error("cannot open " + paths.log.string() + ": " + std::strerror(errno));
-  std::vector<std::string> words{request.capsule_binary.string(), paths.scene.string(), "-o", paths.h5.string(),
-                                 "--id", id, "--threads", std::to_string(request.threads), "--progress-seconds", "10",
-                                 "--checkpoint-seconds", std::to_string(request.checkpoint_seconds)};
+// capsule's command line for the member: its scene, member file, id, threads and restart points.
+std::vector<std::string> capsule_arguments(const MemberJobRequest& request, const MemberPaths& paths,
+                                           const std::string& id) {
+  return {request.capsule_binary.string(), paths.scene.string(), "-o", paths.h5.string(),
+          "--id", id, "--threads", std::to_string(request.threads), "--progress-seconds", "10",
+          "--checkpoint-seconds", std::to_string(request.checkpoint_seconds)};
+}
+
+// Starts capsule with its output appended to log_fd and the member lock's token in its
+// environment, the signal mask old_mask restored in the child; returns its pid.
+pid_t start_capsule(std::vector<std::string> words, int log_fd, const fs::path& member_dir, const MemberLock& lock,
+                    const sigset_t& old_mask) {
   std::vector<char*> argv;
   for (auto& w : words) argv.push_back(w.data());
   argv.push_back(nullptr);
-
-  // The signals to pass on wait, blocked, in sigtimedwait below (with SIGCHLD), so none is lost
-  // between the fork and the wait.
-  sigset_t wanted, old_mask;
-  sigemptyset(&wanted);
-  for (int s : {SIGCHLD, SIGTERM, SIGINT, SIGUSR1, SIGHUP}) sigaddset(&wanted, s);
-  sigprocmask(SIG_BLOCK, &wanted, &old_mask);
   const pid_t child = ::fork();
   if (child < 0) {
     const int err = errno;
@@ -164,35 +158,85 @@ int run_member_job(const MemberJobRequest& request, std::ostream& log) {
     std::fprintf(stderr, "study run-member: cannot run %s: %s\n", argv[0], std::strerror(errno));
     ::_exit(errno == ENOENT ? 127 : 126);
   }
-  ::close(log_fd);
-  int status = 0;
+  return child;
+}
+
+struct CapsuleEnd {
+  int status = 0;     // waitpid's status
   bool lost = false;  // the lock was taken over while this run was stopped
+};
+
+// Waits for capsule, passing the signals of wanted (blocked) on to it and keeping the lock's
+// heartbeat; a lock taken over meanwhile ends capsule.
+CapsuleEnd wait_passing_signals(pid_t child, const sigset_t& wanted, const MemberLock& lock) {
+  CapsuleEnd end;
   for (;;) {
     const timespec heartbeat{static_cast<time_t>(kLockHeartbeatSeconds), 0};
     siginfo_t info{};
     const int s = sigtimedwait(&wanted, &info, &heartbeat);
     if (s == SIGCHLD || s < 0) {
       if (s < 0 && errno != EAGAIN && errno != EINTR) {
-        ::waitpid(child, &status, 0);
+        ::waitpid(child, &end.status, 0);
         break;
       }
-      if (s < 0 && !lost && !lock.refresh()) {
-        lost = true;
+      if (s < 0 && !end.lost && !lock.refresh()) {
+        end.lost = true;
         ::kill(child, SIGTERM);  // capsule finds the lock gone before its next write and ends
       }
-      const pid_t r = ::waitpid(child, &status, WNOHANG);
+      const pid_t r = ::waitpid(child, &end.status, WNOHANG);
       if (r == child) break;
       continue;
     }
     ::kill(child, s);  // capsule writes a restart point at its next step and stops
   }
+  return end;
+}
+
+// Runs capsule on the member under its lock; returns capsule's exit status, nothing when the
+// lock was taken over meanwhile (then nothing of the member may be touched).
+std::optional<int> run_capsule(const MemberJobRequest& request, const MemberPaths& paths, const std::string& id,
+                const MemberLock& lock, std::ostream& log) {
+  const int log_fd = ::open(paths.log.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  if (log_fd < 0) throw std::runtime_error("cannot open " + paths.log.string() + ": " + std::strerror(errno));
+  // The signals to pass on wait, blocked, in sigtimedwait (with SIGCHLD), so none is lost
+  // between the fork and the wait.
+  sigset_t wanted, old_mask;
+  sigemptyset(&wanted);
+  for (int s : {SIGCHLD, SIGTERM, SIGINT, SIGUSR1, SIGHUP}) sigaddset(&wanted, s);
+  sigprocmask(SIG_BLOCK, &wanted, &old_mask);
+  const pid_t child = start_capsule(capsule_arguments(request, paths, id), log_fd, paths.dir, lock, old_mask);
+  ::close(log_fd);
+  const CapsuleEnd end = wait_passing_signals(child, wanted, lock);
   sigprocmask(SIG_SETMASK, &old_mask, nullptr);
-  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : WIFSIGNALED(status) ? 128 + WTERMSIG(status) : 1;
-  if (lost || code == kExitOwnershipLost || !lock.still_held()) {
-    log << "study run-member: " << name << ": its lock was taken over while this run was stopped (now "
-        << read_file_text(member_lock_file(member_dir)) << "); this run ended without touching the member's files\n";
-    return 0;
+  const int code = WIFEXITED(end.status) ? WEXITSTATUS(end.status) : WIFSIGNALED(end.status) ? 128 + WTERMSIG(end.status) : 1;
+  if (end.lost || code == kExitOwnershipLost || !lock.still_held()) {
+    log << "study run-member: " << paths.dir.filename().string() << ": its lock was taken over while this run was stopped (now "
+        << read_file_text(member_lock_file(paths.dir)) << "); this run ended without touching the member's files\n";
+    return std::nullopt;
   }
+  return code;
+}
+
+}  // namespace
+
+int run_member_job(const MemberJobRequest& request, std::ostream& log) {
+  const fs::path member_dir = normal_member_dir(request.member_dir);
+  const MemberPaths paths = member_paths_in(member_dir);
+  if (const std::string link = linked_member_folder(member_dir); !link.empty())
+    throw std::runtime_error("study run-member: " + link);
+  const std::string id = member_id_from_scene(member_dir);
+  const MemberLock lock(member_dir);
+  if (const std::optional<int> code = left_alone(request, paths, id, lock, log)) return *code;
+  std::error_code ec;
+  fs::remove(paths.exit_status, ec);
+  fs::remove(paths.partial, ec);
+  remove_leftover_temporaries(member_dir);
+
+  const std::string started = utc_now_iso8601();
+  const double t0 = now_seconds();
+  const std::optional<int> ended = run_capsule(request, paths, id, lock, log);
+  if (!ended) return 0;
+  const int code = *ended;
   if (code != kExitStoppedBySignal) write_file_atomically(paths.exit_status, std::to_string(code) + "\n");
   record_slurm_task(member_dir, started, now_seconds() - t0, code);
   return code == 126 || code == 127 ? code : 0;
