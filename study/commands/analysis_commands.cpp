@@ -39,6 +39,74 @@ void swap_in(const fs::path& staging, const fs::path& report) {
   fs::remove_all(previous);
 }
 
+// The members a report reads, and those it lists without reading.
+struct ReportMembers {
+  std::vector<analysis::MemberRef> refs;  // one per member file and case (a shared member once per case)
+  std::vector<std::string> not_run;       // "member: state", members without a final file yet
+  std::vector<std::string> unreadable;    // "member: reason"
+};
+
+ReportMembers report_members(const CampaignSurvey& survey, std::ostream& out) {
+  ReportMembers r;
+  for (std::size_t i = 0; i < survey.members.size(); ++i) {
+    const Member& m = survey.members[i];
+    const MemberPaths p = survey.layout.member(m);
+    if (!fs::exists(p.h5)) {
+      // Never run, running, or killed: no file to analyse, but the report lists it (as "member
+      // file missing") so that a table of a campaign still under way says what it lacks.
+      r.not_run.push_back(m.dir_name() + ": " + state_name(survey.conditions[i].state));
+    } else if (survey.conditions[i].state == MemberState::unreadable) {
+      r.unreadable.push_back(m.dir_name() + ": " + survey.conditions[i].reason);
+      continue;
+    } else if (survey.conditions[i].state == MemberState::failed) {
+      // The member's own file only: inspect_member checks its member_id (a file copied from
+      // another campaign, or made by older physics, is "failed", as in `study status`).
+      out << "skipped " << m.dir_name() << ": " << survey.conditions[i].reason << "\n";
+      continue;
+    }
+    // A member shared by several cases is analysed once per case.
+    r.refs.push_back(analysis::MemberRef{m.id, m.slug, p.h5.string(), m.case_name, m.scene});
+    for (const auto& other : m.other_cases)
+      r.refs.push_back(analysis::MemberRef{m.id, m.slug, p.h5.string(), other, m.scene});
+  }
+  return r;
+}
+
+// analysis::write_report into the staging folder, removed again when it throws.
+analysis::ReportSummary write_staged_report(const analysis::ReportRequest& request, const fs::path& staging) {
+  fs::remove_all(staging);
+  try {
+    return analysis::write_report(request);
+  } catch (...) {
+    std::error_code ec;
+    fs::remove_all(staging, ec);
+    throw;
+  }
+}
+
+// A note in the staging folder (PARTIAL.md, INCOMPLETE.md): its text, then one line per item.
+void write_note(const fs::path& staging, const std::string& name, std::string text,
+                const std::vector<std::string>& items, analysis::ReportSummary& summary) {
+  for (const auto& item : items) text += "- " + item + "\n";
+  write_file_atomically(staging / name, text);
+  summary.files.push_back((staging / name).string());
+}
+
+// The files written and the figures' note, with the staging folder's name replaced by the report's.
+void print_written(const analysis::ReportSummary& summary, const fs::path& staging, const fs::path& report_dir,
+                   std::ostream& out) {
+  for (auto f : summary.files) {
+    if (f.rfind(staging.string(), 0) == 0) f = report_dir.string() + f.substr(staging.string().size());
+    out << "wrote " << f << "\n";
+  }
+  if (summary.figures_skipped) {
+    std::string note = summary.figures_note;
+    if (const auto at = note.find(staging.string()); at != std::string::npos)
+      note.replace(at, staging.string().size(), report_dir.string());
+    out << "figures skipped: " << note << "\n";
+  }
+}
+
 }  // namespace
 
 int report_campaign(const CampaignSurvey& survey, const ReportOptions& options, std::ostream& out) {
@@ -51,46 +119,18 @@ int report_campaign(const CampaignSurvey& survey, const ReportOptions& options, 
   request.campaign_file = survey.campaign.source;
   request.out_dir = staging.string();
   request.analysis = survey.campaign.analysis;
-  std::vector<std::string> not_run;     // "member: state", members without a final file yet
-  std::vector<std::string> unreadable;  // "member: reason"
-  for (std::size_t i = 0; i < survey.members.size(); ++i) {
-    const Member& m = survey.members[i];
-    const MemberPaths p = survey.layout.member(m);
-    if (!fs::exists(p.h5)) {
-      // Never run, running, or killed: no file to analyse, but the report lists it (as "member
-      // file missing") so that a table of a campaign still under way says what it lacks.
-      not_run.push_back(m.dir_name() + ": " + state_name(survey.conditions[i].state));
-    } else if (survey.conditions[i].state == MemberState::unreadable) {
-      unreadable.push_back(m.dir_name() + ": " + survey.conditions[i].reason);
-      continue;
-    } else if (survey.conditions[i].state == MemberState::failed) {
-      // The member's own file only: inspect_member checks its member_id (a file copied from
-      // another campaign, or made by older physics, is "failed", as in `study status`).
-      out << "skipped " << m.dir_name() << ": " << survey.conditions[i].reason << "\n";
-      continue;
-    }
-    // A member shared by several cases is analysed once per case.
-    request.members.push_back(analysis::MemberRef{m.id, m.slug, p.h5.string(), m.case_name, m.scene});
-    for (const auto& other : m.other_cases)
-      request.members.push_back(analysis::MemberRef{m.id, m.slug, p.h5.string(), other, m.scene});
-  }
-  if (!not_run.empty())
-    out << not_run.size() << " of " << survey.members.size()
+  ReportMembers members = report_members(survey, out);
+  request.members = members.refs;
+  std::vector<std::string>& unreadable = members.unreadable;
+  if (!members.not_run.empty())
+    out << members.not_run.size() << " of " << survey.members.size()
         << " members have no member file yet: the report says so in INCOMPLETE.md (see `study status`)\n";
   // Figures of a campaign that has not run would be empty axes.
   if (std::none_of(request.members.begin(), request.members.end(),
                    [](const analysis::MemberRef& r) { return fs::exists(r.path); }))
     request.no_figures = "no member of this campaign has a member file yet (run it first: study run " +
                          survey.campaign.source + ")";
-  fs::remove_all(staging);
-  analysis::ReportSummary summary;
-  try {
-    summary = analysis::write_report(request);
-  } catch (...) {
-    std::error_code ec;
-    fs::remove_all(staging, ec);
-    throw;
-  }
+  analysis::ReportSummary summary = write_staged_report(request, staging);
   for (const auto& u : summary.unreadable)
     if (std::find(unreadable.begin(), unreadable.end(), u) == unreadable.end()) unreadable.push_back(u);
   if (!unreadable.empty()) {
@@ -102,33 +142,21 @@ int report_campaign(const CampaignSurvey& survey, const ReportOptions& options, 
           << " (--partial writes one without them and says so in it)\n";
       return exit_members_failed;
     }
-    std::string note = "# This report is partial\n\nWritten with `study report --partial`: these member files could "
-                       "not be read and are not in it.\n\n";
-    for (const auto& u : unreadable) note += "- " + u + "\n";
-    write_file_atomically(staging / "PARTIAL.md", note);
-    summary.files.push_back((staging / "PARTIAL.md").string());
+    write_note(staging, "PARTIAL.md",
+               "# This report is partial\n\nWritten with `study report --partial`: these member files could "
+               "not be read and are not in it.\n\n",
+               unreadable, summary);
   }
-  if (!not_run.empty()) {
-    std::string note = "# This campaign is not complete\n\n" + std::to_string(not_run.size()) + " of " +
-                       std::to_string(survey.members.size()) +
-                       " members have no member file yet. The report's tables list them as \"member file missing\" "
-                       "and every fit, model or ladder that needs them is missing or rests on the others; "
-                       "`study run` completes them and `study report` then writes the whole report.\n\n";
-    for (const auto& n : not_run) note += "- " + n + "\n";
-    write_file_atomically(staging / "INCOMPLETE.md", note);
-    summary.files.push_back((staging / "INCOMPLETE.md").string());
-  }
+  if (!members.not_run.empty())
+    write_note(staging, "INCOMPLETE.md",
+               "# This campaign is not complete\n\n" + std::to_string(members.not_run.size()) + " of " +
+                   std::to_string(survey.members.size()) +
+                   " members have no member file yet. The report's tables list them as \"member file missing\" "
+                   "and every fit, model or ladder that needs them is missing or rests on the others; "
+                   "`study run` completes them and `study report` then writes the whole report.\n\n",
+               members.not_run, summary);
   swap_in(staging, report_dir);
-  for (auto f : summary.files) {
-    if (f.rfind(staging.string(), 0) == 0) f = report_dir.string() + f.substr(staging.string().size());
-    out << "wrote " << f << "\n";
-  }
-  if (summary.figures_skipped) {
-    std::string note = summary.figures_note;
-    if (const auto at = note.find(staging.string()); at != std::string::npos)
-      note.replace(at, staging.string().size(), report_dir.string());
-    out << "figures skipped: " << note << "\n";
-  }
+  print_written(summary, staging, report_dir, out);
   return unreadable.empty() ? members_exit_code(survey) : exit_members_failed;
 }
 
