@@ -13,7 +13,7 @@ std::string member_wrapper_text(const WrapperSettings& w) {
          "# usage: run_member.sh MEMBER_DIR THREADS\n"
          "# `study run-member` takes the member's lock, skips a complete member, runs capsule (its\n"
          "# output appended to the member's capsule.log; a rerun continues from member.h5.restart),\n"
-         "# passes signals on to it and records its exit status (study/run/member_run.hpp).\n"
+         "# passes signals on to it and records its exit status (study/run/member_job.hpp).\n"
          "exec " + shell_quote(w.study_binary.string()) + " run-member --capsule " +
          shell_quote(w.capsule_binary.string()) + " --checkpoint-seconds " + std::to_string(w.checkpoint_seconds) +
          (w.capsule_code_version.empty() ? "" : " --code-version " + shell_quote(w.capsule_code_version)) +

@@ -1,7 +1,7 @@
 #pragma once
 // The generated script GNU Parallel (or a Slurm task) runs for one member:
 //   run_member.sh MEMBER_DIR THREADS
-// It execs `study run-member` (study/run/member_run.hpp) with the capsule binary and the restart
+// It execs `study run-member` (study/run/member_job.hpp) with the capsule binary and the restart
 // point interval: the member's lock, a complete member left alone, capsule's output appended to
 // MEMBER_DIR/capsule.log, its exit status kept in MEMBER_DIR/exit_status, signals passed on. A
 // member killed earlier continues from its restart point. Arguments arrive as positional

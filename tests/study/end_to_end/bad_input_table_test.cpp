@@ -1,0 +1,205 @@
+// The bad-input table: every refusal of a scene, a campaign or a command
+// line, run through the real binaries (`capsule check`, `capsule`, `study plan` / `run` /
+// `export`), checking the exit status and that the message names the file, the key and
+// what is allowed. One row per refusal; a new refusal gets a new row.
+#include <catch2/catch.hpp>
+
+#include <functional>
+#include <nlohmann/json.hpp>
+
+#include "study/campaign/campaign.hpp"
+#include "study/run/shell_quote.hpp"
+#include "tests/study/support/study_test_support.hpp"
+
+using namespace capsule::study;
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+json scene_2d() {
+  return json::parse(R"({"dim": 2, "shape": "circle", "Ca": 0.05, "E_b": 0, "V": 1, "eta": 0,
+    "resolution": {"a": 4, "segments": 32},
+    "protocol": {"shear": {"until": "time", "kt": 1}, "recover": {"until": "time", "kt": 1}}})");
+}
+
+json scene_3d() {
+  json j = scene_2d();
+  j["dim"] = 3;
+  j["shape"] = "sphere";
+  j["resolution"] = {{"a", 4}, {"mesh_level", 2}};
+  return j;
+}
+
+std::string scene_with(const std::function<void(json&)>& edit, json j = scene_2d()) {
+  edit(j);
+  return j.dump(2);
+}
+
+json campaign(const std::string& name = "bad") {
+  return {{"name", name}, {"base", scene_2d()}, {"sweep", {{"grid", {{"Ca", {0.02, 0.05}}}}}}};
+}
+
+std::string campaign_with(const std::function<void(json&)>& edit) {
+  json j = campaign();
+  edit(j);
+  return j.dump(2);
+}
+
+// A campaign text with the base's "Ca" replaced by raw text (for what JSON cannot hold).
+std::string campaign_raw_ca(const std::string& raw) {
+  std::string text = campaign().dump();
+  const std::string from = "\"Ca\":0.05";
+  text.replace(text.find(from), from.size(), "\"Ca\":" + raw);
+  return text;
+}
+
+std::string scene_raw(const std::string& key, const std::string& raw) {
+  std::string text = scene_2d().dump();
+  const std::string from = "\"" + key + "\":";
+  const auto at = text.find(from) + from.size();
+  const auto end = text.find_first_of(",}", at);
+  text.replace(at, end - at, raw);
+  return text;
+}
+
+struct Row {
+  std::string what;
+  std::string program;              // "capsule" or "study"
+  std::vector<std::string> args;    // FILE stands for the written file's path
+  std::string file_name;            // written with `text` into the scratch folder ("" = none)
+  std::string text;
+  int exit_code;
+  std::vector<std::string> message_has;  // "FILE" (the file's path), the key, and what is allowed
+};
+
+}  // namespace
+
+TEST_CASE("the bad-input table: every refusal exits with its code and names the file, key and range", "[study]") {
+  const fs::path dir = testing::scratch_dir("bad_inputs");
+  const std::vector<std::string> check{"check", "FILE"};
+  const std::vector<std::string> plan{"plan", "FILE"};
+  const std::string long_name(300, 'x');
+  const std::vector<Row> table{
+      // Scenes (`capsule check`; the run refuses the same, see the last rows).
+      {"negative Ca", "capsule", check, "s.json", scene_with([](json& j) { j["Ca"] = -0.1; }), 2, {"FILE", "Ca: value -0.1 out of range", "(allowed: (0, 10])"}},
+      {"V = 0", "capsule", check, "s.json", scene_with([](json& j) { j["V"] = 0; }), 2, {"FILE", "V: value 0 out of range", "(allowed: (0, 100])"}},
+      {"a = 1", "capsule", check, "s.json", scene_with([](json& j) { j["resolution"]["a"] = 1; }), 2, {"FILE", "resolution.a: value 1 out of range", "(allowed: [2, 200])"}},
+      {"mesh level 9", "capsule", check, "s.json", scene_with([](json& j) { j["resolution"]["mesh_level"] = 9; }, scene_3d()), 2,
+       {"FILE", "resolution.mesh_level: value 9 out of range", "(allowed: integer in [0, 6])"}},
+      {"wrong type (string for a number)", "capsule", check, "s.json", scene_with([](json& j) { j["E_b"] = "0.1"; }), 2,
+       {"FILE", "E_b: expected a number, got \"0.1\"", "(allowed: [0, 10])"}},
+      {"wrong type (number for a string)", "capsule", check, "s.json", scene_with([](json& j) { j["shape"] = 3; }), 2,
+       {"FILE", "shape: expected a string, got 3", "(allowed: circle | biconcave)"}},
+      {"wrong type (fractional integer)", "capsule", check, "s.json", scene_with([](json& j) { j["resolution"]["segments"] = 32.5; }), 2,
+       {"FILE", "resolution.segments: expected an integer", "(allowed: integer in [16, 100000])"}},
+      {"unknown key", "capsule", check, "s.json", scene_with([](json& j) { j["Capillary"] = 0.1; }), 2, {"FILE", "Capillary: unknown key", "(allowed: dim, physics_version, shape, law, C"}},
+      {"unknown nested key", "capsule", check, "s.json", scene_with([](json& j) { j["protocol"]["shear"]["kt_max"] = 3; }), 2,
+       {"FILE", "protocol.shear.kt_max: unknown key", "(allowed: until, kt, value"}},
+      {"missing key", "capsule", check, "s.json", scene_with([](json& j) { j.erase("Ca"); }), 2, {"FILE", "Ca: missing required key", "(allowed: (0, 10])"}},
+      {"missing nested key", "capsule", check, "s.json", scene_with([](json& j) { j["protocol"]["recover"].erase("kt"); }), 2,
+       {"FILE", "protocol.recover.kt: missing required key", "(allowed: [0, 10000])"}},
+      {"NaN", "capsule", check, "s.json", scene_raw("Ca", "NaN"), 2, {"FILE", "Ca: not valid JSON", "NaN and Infinity are not JSON"}},
+      {"Infinity", "capsule", check, "s.json", scene_raw("V", "Infinity"), 2, {"FILE", "V: not valid JSON", "NaN and Infinity are not JSON"}},
+      {"number overflow", "capsule", check, "s.json", scene_raw("Ca", "1e400"), 2, {"FILE", "Ca: not valid JSON", "1e400", "(allowed: numbers of magnitude below 1.8e308)"}},
+      {"duplicate key", "capsule", check, "s.json", R"({"dim": 2, "Ca": 0.05, "Ca": 0.1})", 2, {"FILE", "Ca: key given twice", "(allowed: each key once per object)"}},
+      {"2D power law", "capsule", check, "s.json", scene_with([](json& j) { j["power_law"] = {{"K", 0.1}}; }), 2, {"FILE", "power_law.K: ", "3D model", "(allowed: 0 in 2D)"}},
+      {"3D-only kernel in 2D", "capsule", check, "s.json", scene_with([](json& j) { j["resolution"]["kernel"] = "roma3"; }), 2,
+       {"FILE", "resolution.kernel: kernel \"roma3\" is 3D only", "(allowed: \"peskin4\" in 2D)"}},
+      {"unstable tau", "capsule", check, "s.json", scene_with([](json& j) { j["resolution"]["tau"] = 0.5; }), 2,
+       {"FILE", "resolution.tau: ", "(allowed: 0 (chosen by the solver) or [0.505, 10])"}},
+      {"not an object", "capsule", check, "s.json", "[1, 2]", 2, {"FILE", "(top level): expected a JSON object", "(allowed: an object {...})"}},
+      {"run refuses what check refuses", "capsule", {"FILE", "-o", "out.h5"}, "s.json",
+       scene_with([](json& j) { j["power_law"] = {{"K", 0.1}}; }), 2, {"FILE", "power_law.K: ", "(allowed: 0 in 2D)"}},
+      {"run refuses a folder as -o", "capsule", {"FILE", "-o", "."}, "s.json", scene_2d().dump(), 2, {": is a folder", "-o names the member file"}},
+
+      // Campaigns (`study plan`).
+      {"unsafe campaign name", "study", plan, "c.json", campaign("../etc").dump(), 2,
+       {"FILE", "name: \"../etc\" is not a safe name", "(expected: letters, digits, '_', '-', '.'"}},
+      {"hidden campaign name", "study", plan, "c.json", campaign(".hidden").dump(), 2, {"FILE", "name: \".hidden\" is not a safe name", "not starting with '.'"}},
+      {"300-character campaign name", "study", plan, "c.json", campaign(long_name).dump(), 2,
+       {"FILE", "name: a name of 300 characters is too long", "(expected: at most 100 characters)"}},
+      {"unequal zip lists", "study", plan, "c.json", campaign_with([](json& j) { j["sweep"] = {{"zip", {{"Ca", {0.1, 0.2}}, {"V", {1, 2, 3}}}}}; }), 2,
+       {"FILE", "sweep.zip.V: zip lists of unequal length", "(expected: every zip list of the same length)"}},
+      {"empty sweep list", "study", plan, "c.json", campaign_with([](json& j) { j["sweep"]["grid"]["Ca"] = json::array(); }), 2,
+       {"FILE", "sweep.grid.Ca: empty sweep", "(expected: a list of at least one value)"}},
+      {"empty sweep", "study", plan, "c.json", campaign_with([](json& j) { j["sweep"] = json::object(); }), 2, {"FILE", "sweep: empty sweep", "(expected: \"grid\" and/or \"zip\")"}},
+      {"duplicate members", "study", plan, "c.json", campaign_with([](json& j) { j["sweep"]["grid"]["Ca"] = {0.1, 1e-1}; }), 2,
+       {"FILE", "sweep: Ca = 0.1 gives the same scene as Ca = 0.1", "(expected: every member of a case a different scene)"}},
+      {"unknown campaign key", "study", plan, "c.json", campaign_with([](json& j) { j["sweeps"] = json::object(); }), 2,
+       {"FILE", "sweeps: unknown key", "(expected: one of analysis, base, cases"}},
+      {"missing base", "study", plan, "c.json", campaign_with([](json& j) { j.erase("base"); }), 2, {"FILE", "base: missing required key", "(expected: a scene object)"}},
+      {"wrong type of name", "study", plan, "c.json", campaign_with([](json& j) { j["name"] = 7; }), 2, {"FILE", "name: is a number", "(expected: a string)"}},
+      {"member scene out of range", "study", plan, "c.json", campaign_with([](json& j) { j["sweep"]["grid"]["Ca"] = {0.05, -1}; }), 2,
+       {"FILE", "Ca = -1", "Ca: value -1 out of range", "(allowed: (0, 10])"}},
+      {"member scene 2D power law", "study", plan, "c.json", campaign_with([](json& j) { j["base"]["power_law"] = {{"K", 1}}; }), 2,
+       {"FILE", "power_law.K: ", "(allowed: 0 in 2D)"}},
+      {"campaign duplicate key", "study", plan, "c.json", R"({"name": "a", "name": "b", "base": {}})", 2, {"FILE", "name: key given twice", "(allowed: each key once per object)"}},
+      {"campaign number overflow", "study", plan, "c.json", campaign_raw_ca("1e400"), 2, {"FILE", "base.Ca: not valid JSON", "(allowed: numbers of magnitude below 1.8e308)"}},
+      {"campaign NaN", "study", plan, "c.json", campaign_raw_ca("NaN"), 2, {"FILE", "base.Ca: not valid JSON", "NaN and Infinity are not JSON"}},
+
+      // Bounded input: nesting depth, and values quoted in messages escaped and cut.
+      {"scene nested 100 000 deep", "capsule", check, "s.json",
+       "{\"dim\": 2, \"x\": " + std::string(100000, '[') + std::string(100000, ']') + "}", 2,
+       {"FILE", "x[0][0]", "nested deeper than 64 levels", "(allowed: at most 64 nested objects or arrays)"}},
+      {"campaign nested 100 000 deep", "study", plan, "c.json",
+       "{\"name\": \"deep\", \"base\": " + std::string(100000, '[') + std::string(100000, ']') + "}", 2,
+       {"FILE", "base[0][0]", "nested deeper than 64 levels"}},
+      {"a 1 MB string with an ESC", "capsule", check, "s.json",
+       scene_with([](json& j) { j["shape"] = "\x1b[31m" + std::string(1000000, 'A'); }), 2,
+       {"FILE", "shape: unknown value \"\\u001b[31mAAAA", "... (1000005 characters)", "(allowed: circle | biconcave)"}},
+      {"a 1 MB key", "capsule", check, "s.json", scene_with([](json& j) { j[std::string(1000000, 'k')] = 1; }), 2,
+       {"FILE", "kkkk... (1000000 characters): unknown key"}},
+
+      // Command lines.
+      {"-j 0", "study", {"run", "FILE", "-j", "0"}, "c.json", campaign().dump(), 2, {"--jobs", "must be a whole number from 1 to 1000000, got \"0\""}},
+      {"--threads -1", "study", {"run", "FILE", "--threads", "-1"}, "c.json", campaign().dump(), 2, {"--threads", "must be a whole number from 1 to 1000000"}},
+      {"capsule --threads -1", "capsule", {"FILE", "-o", "out.h5", "--threads", "-1"}, "s.json", scene_2d().dump(), 2,
+       {"--threads", "must be a whole number from 0 to 1000000"}},
+      {"export --mem in words", "study", {"export", "FILE", "--slurm", "--mem", "lots"}, "c.json", campaign().dump(), 2,
+       {"--mem", "(allowed: megabytes, or a number with K, M, G or T)"}},
+      {"--checkpoint-seconds nan", "study", {"run", "FILE", "--checkpoint-seconds", "nan"}, "c.json", campaign().dump(), 2,
+       {"--checkpoint-seconds", "must be a number in (0, 10000000], got \"nan\""}},
+      {"--checkpoint-seconds inf", "study", {"run", "FILE", "--checkpoint-seconds", "inf"}, "c.json", campaign().dump(), 2,
+       {"--checkpoint-seconds", "must be a number in (0, 10000000], got \"inf\""}},
+      {"export --checkpoint-seconds 1e300", "study", {"export", "FILE", "--slurm", "--checkpoint-seconds", "1e300"}, "c.json",
+       campaign().dump(), 2, {"--checkpoint-seconds", "must be a number in (0, 10000000], got \"1e300\""}},
+      {"run-member --checkpoint-seconds -inf", "study", {"run-member", "--capsule", "x", "--checkpoint-seconds", "-inf", "--", ".", "1"},
+       "", "", 2, {"--checkpoint-seconds", "must be a number in (0, 10000000]"}},
+      {"capsule --progress-seconds nan", "capsule", {"FILE", "-o", "out.h5", "--progress-seconds", "nan"}, "s.json", scene_2d().dump(), 2,
+       {"--progress-seconds", "must be a number in (0, 10000000], got \"nan\""}},
+      {"capsule --checkpoint-seconds 1e400", "capsule", {"FILE", "-o", "out.h5", "--checkpoint-seconds", "1e400"}, "s.json",
+       scene_2d().dump(), 2, {"--checkpoint-seconds", "must be a number in [0, 10000000], got \"1e400\""}},
+      {"control characters in a campaign's description, printed by plan", "study", plan, "c.json",
+       campaign_with([](json& j) { j["description"] = "\x1b]0;retitled\x07\x1b[31mred\rover"; }), 0,
+       {"\\u001b]0;retitled\\u0007\\u001b[31mred\\u000dover"}},
+
+      {"results path with a line break", "study", {"export", "FILE", "--slurm", "--results", "r\nx"}, "c.json", campaign().dump(), 2,
+       {"the results folder contains a control character", "refused in a generated script"}},
+  };
+  for (const auto& row : table) {
+    INFO(row.what);
+    const fs::path file = dir / row.file_name;
+    if (!row.file_name.empty()) testing::write_text(file, row.text);
+    std::vector<std::string> args;
+    for (const auto& a : row.args) args.push_back(a == "FILE" ? file.string() : a);
+    testing::CommandResult r;
+    if (row.program == "study") {
+      r = testing::run_study(args, dir);
+    } else {
+      std::string line = "cd ";  // append(): GCC 12 -O3 false -Wrestrict on "literal" + string
+      line.append(shell_quote(dir.string())).append(" && ").append(shell_quote(testing::capsule_binary().string()));
+      for (const auto& a : args) line.append(" ").append(shell_quote(a));
+      r = testing::run_shell(line.append(" </dev/null"));
+    }
+    INFO(r.output.substr(0, 2000));
+    CHECK(r.exit_code == row.exit_code);
+    CHECK(r.output.size() < 2000);  // no message echoes a value in full
+    CHECK(r.output.find('\x1b') == std::string::npos);
+    for (const auto& part : row.message_has)  // "FILE": the message names the file
+      CHECK(r.output.find(part == "FILE" ? file.string() : part) != std::string::npos);
+  }
+  CHECK_FALSE(fs::exists(dir / "out.h5"));
+  CHECK_FALSE(fs::exists(dir / "results"));  // no refusal wrote anything
+  fs::remove_all(dir);
+}
