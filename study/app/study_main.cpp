@@ -23,6 +23,7 @@
 #include "study/run/run_lock.hpp"
 #include "study/run/script_path.hpp"
 #include "study/slurm/slurm_export.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "study/state/status_json.hpp"
 #include "build_info.hpp"
 
@@ -227,7 +228,7 @@ int main_body(int argc, char** argv) {
     for (std::size_t i = 0; i < files.size(); ++i) {
       if (files.size() > 1) std::cout << "\n== " << files[i] << "\n" << std::flush;
       run_request.campaign_file = files[i];
-      codes.push_back(run_campaign(run_request, std::cout).exit_code);
+      codes.push_back(run_campaign(run_request, slurm_queue, std::cout).exit_code);
       if (const int signal = stop_signal_received(); signal != 0 && i + 1 < files.size()) {
         std::cout << "\nstopped by signal " << signal << " (" << (signal == SIGINT ? "SIGINT" : "SIGTERM")
                   << "): " << files.size() - i - 1 << " campaign" << (files.size() - i - 1 == 1 ? "" : "s")
@@ -241,12 +242,12 @@ int main_body(int argc, char** argv) {
     return worst_exit_code(codes);
   }
   if (*status) {
-    const CampaignSurvey survey = survey_campaign(status_file, results_dir, SurveyDetail::states_only);
+    const CampaignSurvey survey = survey_campaign(status_file, results_dir, slurm_queue, SurveyDetail::states_only);
     if (status_as_json) std::cout << status_json(survey).dump(2) << "\n";
     else print_status(survey, std::cout);
     return members_exit_code(survey);
   }
-  if (*report) return report_campaign(survey_campaign(report_file, results_dir), report_options, std::cout);
+  if (*report) return report_campaign(survey_campaign(report_file, results_dir, slurm_queue), report_options, std::cout);
   if (*compare) return compare_campaign_files(compare_files, table2, results_dir, std::cout);
   if (*thesis) {
     const std::filesystem::path out = thesis_out.empty() ? std::filesystem::path(results_dir) / "THESIS.md"
@@ -255,7 +256,7 @@ int main_body(int argc, char** argv) {
   }
   if (*exporter) {
     for (const auto& file : campaign_files_of(export_files)) {
-      const CampaignSurvey survey = survey_campaign(file, results_dir);
+      const CampaignSurvey survey = survey_campaign(file, results_dir, slurm_queue);
     const SlurmExport e = export_slurm(survey, slurm_options);
     std::cout << e.copied << "job list: " << e.job_list.string() << "\n";
     for (const auto& sc : e.scripts)

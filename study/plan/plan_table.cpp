@@ -15,7 +15,7 @@
 #include "solver/scene/json_text.hpp"
 #include "solver/scene/memory_estimate.hpp"
 #include "study/plan/concurrency.hpp"
-#include "study/plan/duration_text.hpp"
+#include "study/state/duration_text.hpp"
 #include "study/state/campaign_owner.hpp"
 #include "study/state/member_reuse.hpp"
 #include "study/state/stray_folders.hpp"
@@ -70,7 +70,7 @@ PlanSummary print_plan(const Campaign& plan_campaign, const ResultsLayout& layou
   bool any_3d = false;
   std::set<std::string> strays = member_folder_names(layout);  // emptied of the members' folders below
   const ReusableMembers elsewhere(layout.root.parent_path(), layout.root);
-  // A member another campaign finished costs nothing: `study run` copies it (finished_elsewhere.hpp).
+  // A member another campaign finished costs nothing: `study run` copies it (member_reuse.hpp).
   const auto copyable = [&](const Member& m, const MemberCondition& c) -> std::optional<FinishedMember> {
     if (c.state != MemberState::fresh && c.state != MemberState::interrupted && c.state != MemberState::failed)
       return std::nullopt;

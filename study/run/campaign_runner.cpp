@@ -126,8 +126,8 @@ void print_status(const CampaignSurvey& survey, std::ostream& out) {
     out << "  (unstable and stopped members are kept: `study run --rerun-unstable` / `--rerun-stopped` runs them again)\n";
 }
 
-RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
-  CampaignSurvey survey = survey_campaign(request.campaign_file, request.results_dir);
+RunOutcome run_campaign(const RunRequest& request, const QueueReader& queue, std::ostream& out) {
+  CampaignSurvey survey = survey_campaign(request.campaign_file, request.results_dir, queue);
   // --case and --where: checked before anything is written.
   const MemberSelection selection = select_members(request.campaign_file, survey.campaign, request.cases, request.where);
   std::vector<bool> matched(selection.where.size(), false);
