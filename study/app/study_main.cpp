@@ -5,7 +5,7 @@
 #include <iostream>
 #include <unistd.h>
 
-#include "solver/app/cli_support.hpp"
+#include "common/cli_support.hpp"
 #include "solver/io/member_file.hpp"
 #include "solver/scene/scene.hpp"
 #include "solver/scene/version.hpp"

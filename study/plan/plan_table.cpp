@@ -12,7 +12,7 @@
 #include "study/state/member_state.hpp"
 
 #include "solver/io/member_file.hpp"
-#include "solver/scene/json_text.hpp"
+#include "common/json_text.hpp"
 #include "solver/scene/memory_estimate.hpp"
 #include "study/plan/concurrency.hpp"
 #include "study/state/duration_text.hpp"
