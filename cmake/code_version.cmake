@@ -1,11 +1,11 @@
 # Computes the code version recorded in member files and run records, at every build (not
 # once at configure time): `git describe` of HEAD, and when the sources that go into the
-# binaries differ from it (tracked changes or untracked files under solver/ study/ analysis/
+# binaries differ from it (tracked changes or untracked files under common/ solver/ study/ analysis/
 # cmake/ and CMakeLists.txt; results/, docs/ and tests/ never count), "-dirty-" and the first
 # 12 hex digits of a SHA-256 over those differences, so two different dirty builds never share
 # a version. Writes OUT only when the text changes, so an unchanged tree rebuilds nothing.
 # Usage: cmake -DSOURCE_DIR=... -DOUT=... -DTEMPLATE=... -P code_version.cmake
-set(paths solver study analysis cmake CMakeLists.txt)
+set(paths common solver study analysis cmake CMakeLists.txt)
 execute_process(COMMAND git describe --always --abbrev=12
                 WORKING_DIRECTORY ${SOURCE_DIR} OUTPUT_VARIABLE describe
                 OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET RESULT_VARIABLE git_failed)

@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "analysis/report/analysis_block.hpp"
-#include "analysis/fit/resolution_ladder.hpp"
+#include "analysis/report/resolution_ladder.hpp"
 #include "analysis/report/table.hpp"
 
 namespace capsule::analysis {

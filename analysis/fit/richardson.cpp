@@ -5,7 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "analysis/report/table.hpp"
+#include "analysis/fit/number_format.hpp"
 
 namespace capsule::analysis {
 

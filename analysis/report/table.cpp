@@ -84,13 +84,6 @@ std::vector<bool> numeric_with_reasons(const std::vector<std::string>& header,
 }
 }  // namespace
 
-std::string format_number(double x) {
-  if (!std::isfinite(x)) return "";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
-  return buf;
-}
-
 std::string Table::to_markdown() const {
   std::ostringstream s;
   if (!title.empty()) s << "**" << md_cell(title) << "**\n\n";

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "analysis/fit/number_format.hpp"
+
 namespace capsule::analysis {
 
 struct Table {
@@ -18,8 +20,5 @@ struct Table {
   // Writes <dir>/<stem>.md, .csv, .tex; returns the three paths.
   std::vector<std::string> write(const std::string& dir, const std::string& stem) const;
 };
-
-// Number formatting shared by every table: 6 significant digits; "" for NaN.
-std::string format_number(double x);
 
 }  // namespace capsule::analysis

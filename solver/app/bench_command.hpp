@@ -1,5 +1,5 @@
 #pragma once
-#include "solver/app/cli_support.hpp"
+#include "common/cli_support.hpp"
 
 namespace capsule::cli {
 // `capsule bench lbm|member3d ...`: the fluid kernels' and a 3D member step's benchmarks

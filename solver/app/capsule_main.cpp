@@ -8,7 +8,7 @@
 
 #include "solver/app/bench_command.hpp"
 #include "solver/app/bench_command.hpp"
-#include "solver/app/cli_support.hpp"
+#include "common/cli_support.hpp"
 #include "solver/app/reference_bim_command.hpp"
 #include "solver/app/rigid_sphere_command.hpp"
 #include "solver/app/units_command.hpp"

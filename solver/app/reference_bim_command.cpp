@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "solver/app/choice_option.hpp"
-#include "solver/app/cli_support.hpp"
+#include "common/cli_support.hpp"
 #include "solver/boundary_integral/reference_run.hpp"
 
 namespace capsule::cli {

@@ -12,7 +12,7 @@
 #include <sstream>
 
 #include "solver/app/choice_option.hpp"
-#include "solver/app/cli_support.hpp"
+#include "common/cli_support.hpp"
 #include "solver/rigid_sphere/rigid_circle.hpp"
 #include "solver/rigid_sphere/rigid_shell.hpp"
 

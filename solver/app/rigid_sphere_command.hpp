@@ -1,7 +1,7 @@
 #pragma once
 #include <CLI/CLI.hpp>
 
-#include "solver/app/cli_support.hpp"
+#include "common/cli_support.hpp"
 
 namespace capsule::cli {
 // `capsule rigid-sphere ...`: adds the subcommand; its run() returns the exit status.

@@ -1,6 +1,6 @@
 #pragma once
 // Whether this process may still write its member's files. `study run-member` holds the member's
-// lock (study/run/member_lock.hpp) and hands capsule the lock file and its own token in the
+// lock (study/state/member_lock.hpp) and hands capsule the lock file and its own token in the
 // environment (CAPSULE_MEMBER_LOCK, CAPSULE_MEMBER_LOCK_TOKEN). A run that was stopped (SIGSTOP,
 // a frozen node) for longer than the lock's staleness may find its member taken over by another
 // host; before every rename into the member's names (the .partial, the restart point, the member

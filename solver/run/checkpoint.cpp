@@ -13,7 +13,7 @@
 
 #include "build_info.hpp"
 #include "solver/io/content_hash.hpp"
-#include "solver/scene/json_text.hpp"
+#include "common/json_text.hpp"
 #include "solver/scene/version.hpp"
 
 namespace capsule {

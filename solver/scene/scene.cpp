@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "solver/ib/hydrodynamic_radius.hpp"
-#include "solver/scene/json_text.hpp"
+#include "common/json_text.hpp"
 #include "solver/scene/user_hints.hpp"
 
 namespace capsule {

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "solver/app/cli_support.hpp"
+#include "common/cli_support.hpp"
 #include "solver/scene/scene.hpp"
 #include "solver/scene/version.hpp"
 #include "study/campaign/campaign_error.hpp"

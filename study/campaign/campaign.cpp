@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "analysis/report/analysis_block.hpp"
-#include "solver/scene/json_text.hpp"
+#include "common/json_text.hpp"
 #include "solver/scene/user_hints.hpp"
 #include "study/campaign/campaign_error.hpp"
 #include "study/campaign/json_path.hpp"

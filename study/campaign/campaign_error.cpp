@@ -1,6 +1,6 @@
 #include "study/campaign/campaign_error.hpp"
 
-#include "solver/scene/json_text.hpp"
+#include "common/json_text.hpp"
 
 namespace capsule::study {
 

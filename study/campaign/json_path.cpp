@@ -1,6 +1,6 @@
 #include "study/campaign/json_path.hpp"
 
-#include "solver/scene/json_text.hpp"
+#include "common/json_text.hpp"
 
 #include <stdexcept>
 

@@ -9,6 +9,7 @@
 
 #include "study/state/exit_status.hpp"
 #include "study/commands/report_freshness.hpp"
+#include "study/slurm/slurm_queue.hpp"
 
 #include "analysis/compare/campaign_compare.hpp"
 #include "analysis/dissertation/table2_compare.hpp"
@@ -165,7 +166,7 @@ int compare_campaign_files(const std::vector<std::string>& campaign_files, bool 
   std::vector<analysis::CompareEntry> entries;
   std::string joined;
   for (const auto& file : campaign_files) {
-    const CampaignSurvey survey = survey_campaign(file, results_dir);
+    const CampaignSurvey survey = survey_campaign(file, results_dir, slurm_queue);
     if (const auto warning = stale_report_warning(survey)) out << *warning << "\n";
     const Campaign& c = survey.campaign;
     entries.push_back({c.name, survey.layout.report_dir().string()});

@@ -4,7 +4,7 @@
 // the library and returns the exit status (study/state/exit_status.hpp).
 #include <CLI/CLI.hpp>
 
-#include "solver/app/cli_support.hpp"
+#include "common/cli_support.hpp"
 
 namespace capsule::study {
 

@@ -11,6 +11,7 @@
 #include "study/slurm/slurm_export.hpp"
 #include "study/state/campaign_survey.hpp"
 #include "study/state/exit_status.hpp"
+#include "study/slurm/slurm_queue.hpp"
 
 namespace capsule::study {
 
@@ -47,7 +48,7 @@ void print_export(const SlurmExport& e, const CampaignSurvey& survey) {
 int export_campaigns(ExportArguments& a) {
   a.options.allow_dirty = a.options.allow_dirty || allow_dirty_from_environment();
   for (const auto& file : campaign_files_of(a.files)) {
-    const CampaignSurvey survey = survey_campaign(file, a.results_dir);
+    const CampaignSurvey survey = survey_campaign(file, a.results_dir, slurm_queue);
     print_export(export_slurm(survey, a.options), survey);
   }
   return exit_ok;

@@ -9,6 +9,7 @@
 #include "study/commands/commands.hpp"
 #include "study/state/campaign_survey.hpp"
 #include "study/state/exit_status.hpp"
+#include "study/slurm/slurm_queue.hpp"
 
 namespace capsule::study {
 
@@ -35,7 +36,7 @@ cli::Command add_report_command(CLI::App& study) {
   app.add_flag("--legacy-member-files", a->legacy_member_files, legacy_member_files_help);
   return {&app, [a] {
             io::accept_files_without_content_hash(a->legacy_member_files);
-            return report_campaign(survey_campaign(a->file, a->results_dir), a->options, std::cout);
+            return report_campaign(survey_campaign(a->file, a->results_dir, slurm_queue), a->options, std::cout);
           }};
 }
 

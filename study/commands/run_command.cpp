@@ -12,6 +12,7 @@
 #include "study/run/campaign_runner.hpp"
 #include "study/run/provenance.hpp"
 #include "study/state/exit_status.hpp"
+#include "study/slurm/slurm_queue.hpp"
 
 namespace capsule::study {
 
@@ -33,7 +34,7 @@ int run(RunArguments& a) {
   for (std::size_t i = 0; i < files.size(); ++i) {
     if (files.size() > 1) std::cout << "\n== " << files[i] << "\n" << std::flush;
     request.campaign_file = files[i];
-    codes.push_back(run_campaign(request, std::cout).exit_code);
+    codes.push_back(run_campaign(request, slurm_queue, std::cout).exit_code);
     if (const int signal = stop_signal_received(); signal != 0 && i + 1 < files.size()) {
       std::cout << "\nstopped by signal " << signal << " (" << (signal == SIGINT ? "SIGINT" : "SIGTERM")
                 << "): " << files.size() - i - 1 << " campaign" << (files.size() - i - 1 == 1 ? "" : "s")

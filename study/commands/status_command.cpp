@@ -9,6 +9,7 @@
 #include "study/state/campaign_survey.hpp"
 #include "study/state/exit_status.hpp"
 #include "study/state/status_json.hpp"
+#include "study/slurm/slurm_queue.hpp"
 
 namespace capsule::study {
 
@@ -21,7 +22,7 @@ struct StatusArguments {
 };
 
 int status(const StatusArguments& a) {
-  const CampaignSurvey survey = survey_campaign(a.file, a.results_dir, SurveyDetail::states_only);
+  const CampaignSurvey survey = survey_campaign(a.file, a.results_dir, slurm_queue, SurveyDetail::states_only);
   if (a.as_json) std::cout << status_json(survey).dump(2) << "\n";
   else print_status(survey, std::cout);
   return members_exit_code(survey);

@@ -12,10 +12,10 @@
 #include "study/state/member_state.hpp"
 
 #include "solver/io/member_file.hpp"
-#include "solver/scene/json_text.hpp"
+#include "common/json_text.hpp"
 #include "solver/scene/memory_estimate.hpp"
 #include "study/plan/concurrency.hpp"
-#include "study/plan/duration_text.hpp"
+#include "study/state/duration_text.hpp"
 #include "study/state/campaign_owner.hpp"
 #include "study/state/member_reuse.hpp"
 #include "study/state/stray_folders.hpp"

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "study/plan/duration_text.hpp"
+#include "study/state/duration_text.hpp"
 #include "study/plan/plan_table.hpp"
 
 namespace capsule::study {

@@ -309,8 +309,8 @@ CapsuleBinary checked_capsule_binary(const CampaignSurvey& survey, const RunRequ
 
 }  // namespace
 
-RunOutcome run_campaign(const RunRequest& request, std::ostream& out) {
-  CampaignSurvey survey = survey_campaign(request.campaign_file, request.results_dir);
+RunOutcome run_campaign(const RunRequest& request, const QueueReader& queue, std::ostream& out) {
+  CampaignSurvey survey = survey_campaign(request.campaign_file, request.results_dir, queue);
   // --case and --where: checked before anything is written.
   const MemberSelection selection = select_members(request.campaign_file, survey.campaign, request.cases, request.where);
   std::vector<bool> matched(selection.where.size(), false);

@@ -25,7 +25,7 @@ struct RunRequest {
   bool allow_dirty = false;      // run from a build whose sources differ from every commit (provenance.hpp)
   bool rerun_unstable = false;   // also rerun members whose file says unstable
   bool rerun_stopped = false;    // also rerun members whose file says stopped (a configuration the solver refused)
-  bool reuse_finished = true;    // copy a member another campaign under results_dir finished (finished_elsewhere.hpp)
+  bool reuse_finished = true;    // copy a member another campaign under results_dir finished (member_reuse.hpp)
   bool progress_bar = false;     // redraw the campaign's progress line in place (the app sets it on a terminal)
   std::vector<std::string> cases;  // run only the members of these cases (empty: every member)
   std::vector<std::string> where;  // run only the members whose scene has KEY=VALUE (member_filter.hpp)
@@ -39,7 +39,8 @@ struct RunOutcome {
   bool tool_failed = false;     // GNU Parallel failed itself, or a host could not be reached: exit 1
 };
 
-RunOutcome run_campaign(const RunRequest& request, std::ostream& out);
+// queue: which members wait in a batch queue (slurm_queue in `study run`); those are not run.
+RunOutcome run_campaign(const RunRequest& request, const QueueReader& queue, std::ostream& out);
 
 // How long a stopped run (SIGTERM, Ctrl-C) lets each running member write its restart point and
 // exit before GNU Parallel kills it (its --termseq): a 3D member at a = 10 writes 150-300 MB.

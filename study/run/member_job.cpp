@@ -20,7 +20,7 @@
 #include "solver/run/run_member.hpp"
 #include "solver/scene/scene.hpp"
 #include "study/campaign/member_id.hpp"
-#include "study/run/member_lock.hpp"
+#include "study/state/member_lock.hpp"
 #include "study/state/member_state.hpp"
 #include "study/state/results_layout.hpp"
 #include "study/state/run_record.hpp"

@@ -20,7 +20,7 @@ struct SlurmOptions {
   std::string time, mem;      // "" : from the cost estimate
   bool rerun_unstable = false;
   bool rerun_stopped = false;
-  bool reuse_finished = true;  // copy a member another campaign finished instead of exporting it (finished_elsewhere.hpp)
+  bool reuse_finished = true;  // copy a member another campaign finished instead of exporting it (member_reuse.hpp)
   bool allow_dirty = false;    // export from a build whose sources differ from every commit (provenance.hpp)
   double checkpoint_seconds = 300;  // capsule --checkpoint-seconds in every task
   std::size_t array_max = 1000;     // members per script: Slurm refuses array indices >= MaxArraySize (default 1001)

@@ -26,8 +26,8 @@ bool on_path(const std::string& program) {
 
 }  // namespace
 
-SlurmQueue slurm_queue(const ResultsLayout& layout) {
-  SlurmQueue q;
+QueuedMembers slurm_queue(const ResultsLayout& layout) {
+  QueuedMembers q;
   const fs::path record_file = layout.slurm_dir() / "export.json";
   std::error_code ec;
   if (!fs::exists(record_file, ec)) return q;

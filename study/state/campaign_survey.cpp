@@ -3,9 +3,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "study/run/member_lock.hpp"
+#include "study/state/member_lock.hpp"
 #include "study/state/campaign_owner.hpp"
-#include "study/slurm/slurm_queue.hpp"
 
 namespace capsule::study {
 
@@ -17,7 +16,8 @@ std::size_t CampaignSurvey::count(MemberState state) const {
   return n;
 }
 
-CampaignSurvey survey_campaign(const std::string& campaign_file, const fs::path& results_dir, SurveyDetail detail) {
+CampaignSurvey survey_campaign(const std::string& campaign_file, const fs::path& results_dir, const QueueReader& queue,
+                               SurveyDetail detail) {
   Campaign campaign = load_campaign(campaign_file);
   ResultsLayout layout(results_dir, campaign.name);
   require_same_campaign(campaign, layout);
@@ -34,13 +34,13 @@ CampaignSurvey survey_campaign(const std::string& campaign_file, const fs::path&
       [&](std::size_t index, const std::string& case_name) { members[index].other_cases.push_back(case_name); });
   // Members whose Slurm task waits in the queue (after an export): not new, so neither a
   // re-export nor `study run` starts them a second time.
-  const SlurmQueue queue = slurm_queue(layout);
+  const QueuedMembers waiting = queue(layout);
   for (std::size_t i = 0; i < members.size(); ++i)
-    if (const auto it = queue.queued.find(members[i].dir_name()); it != queue.queued.end())
+    if (const auto it = waiting.queued.find(members[i].dir_name()); it != waiting.queued.end())
       if (const MemberState st = conditions[i].state;
           st == MemberState::fresh || st == MemberState::interrupted || st == MemberState::failed)
         conditions[i] = MemberCondition(MemberState::queued, "waiting in Slurm's queue: " + it->second);
-  CampaignSurvey survey{std::move(campaign), std::move(members), std::move(layout), std::move(conditions), queue.note};
+  CampaignSurvey survey{std::move(campaign), std::move(members), std::move(layout), std::move(conditions), waiting.note};
   return survey;
 }
 

@@ -2,6 +2,8 @@
 // A campaign file read, expanded, and matched against what its results folder holds:
 // the common first step of plan, run, status, export and report. Read-only.
 #include <filesystem>
+#include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -26,8 +28,18 @@ struct CampaignSurvey {
 // states) the member without its scene, so a 10^5-member campaign's status fits in little memory.
 enum class SurveyDetail { full, states_only };
 
+// The members whose batch job waits in a queue, read from the results folder's layout; the
+// caller passes the reader (Slurm's: slurm_queue, study/slurm/slurm_queue.hpp).
+struct QueuedMembers {
+  std::map<std::string, std::string> queued;  // member folder name -> "job NAME task T (STATE)"
+  std::string note;                            // why the queue could not be asked ("" when it was, or no export)
+};
+using QueueReader = std::function<QueuedMembers(const ResultsLayout&)>;
+
+// A queued member that is fresh, interrupted or failed is `queued`: neither a re-export nor
+// `study run` starts it a second time.
 CampaignSurvey survey_campaign(const std::string& campaign_file, const std::filesystem::path& results_dir,
-                               SurveyDetail detail = SurveyDetail::full);
+                               const QueueReader& queue, SurveyDetail detail = SurveyDetail::full);
 
 // The folder names of the members that have a run in progress or an interrupted one (a
 // .partial or restart point and no member file): under a held run lock, the running ones.

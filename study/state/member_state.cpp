@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "solver/io/member_file.hpp"
-#include "study/plan/duration_text.hpp"
-#include "study/run/member_lock.hpp"
+#include "study/state/duration_text.hpp"
+#include "study/state/member_lock.hpp"
 #include "study/state/member_verification.hpp"
 #include "study/state/process_alive.hpp"
 #include "study/state/run_record.hpp"

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "analysis/report/report_context.hpp"
-#include "analysis/fit/resolution_ladder.hpp"
+#include "analysis/report/resolution_ladder.hpp"
 #include "analysis/report/scene_parameter.hpp"
 #include "analysis/dissertation/table2_compare.hpp"
 #include "analysis/dissertation/claim_texts.hpp"

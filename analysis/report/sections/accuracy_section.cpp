@@ -13,7 +13,7 @@
 #include "analysis/report/member_quantity.hpp"
 #include "analysis/fit/pareto.hpp"
 #include "analysis/report/report_section.hpp"
-#include "analysis/fit/resolution_ladder.hpp"
+#include "analysis/report/resolution_ladder.hpp"
 #include "analysis/report/scene_parameter.hpp"
 
 namespace capsule::analysis {

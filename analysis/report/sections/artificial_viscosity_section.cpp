@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "analysis/fit/artificial_viscosity.hpp"
-#include "analysis/fit/bilinear_cases.hpp"
+#include "analysis/report/bilinear_cases.hpp"
 #include "analysis/report/report_section.hpp"
 
 namespace capsule::analysis {

@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "analysis/report/report_section.hpp"
-#include "analysis/fit/resolution_ladder.hpp"
+#include "analysis/report/resolution_ladder.hpp"
 
 namespace capsule::analysis {
 

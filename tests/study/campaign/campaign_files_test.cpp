@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include "study/state/campaign_survey.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "study/plan/cost_estimate.hpp"
 #include "study/plan/plan_table.hpp"
 #include "tests/study/support/study_test_support.hpp"
@@ -22,7 +23,7 @@ TEST_CASE("every campaign file plans without error", "[study]") {
       const Campaign c = load_campaign(entry.path().string());
       CHECK_NOTHROW(print_plan(c, ResultsLayout(results, c.name), out));
     }
-    const CampaignSurvey s = survey_campaign(entry.path().string(), results);
+    const CampaignSurvey s = survey_campaign(entry.path().string(), results, slurm_queue);
     CHECK(s.members.size() >= 1);
     CHECK(s.campaign.name == entry.path().stem().string());  // results/<name> matches the file name
     for (const auto& m : s.members) CHECK(estimate_cost(m.scene).nodes > 0);

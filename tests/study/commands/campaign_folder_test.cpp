@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include "study/state/campaign_survey.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "study/state/exit_status.hpp"
 #include "tests/study/support/study_test_support.hpp"
 
@@ -27,7 +28,7 @@ TEST_CASE("a folder of campaigns plans with shared members counted once and runs
   INFO(run.output);
   CHECK(run.exit_code == 0);
   CHECK(run.output.find("copied Ca0.02-") != std::string::npos);  // b's shared member, from a
-  CHECK(survey_campaign((dir / "set" / "more" / "b.json").string(), dir / "results").count(MemberState::complete) == 2);
+  CHECK(survey_campaign((dir / "set" / "more" / "b.json").string(), dir / "results", slurm_queue).count(MemberState::complete) == 2);
 
   // A folder without campaigns is refused by name.
   fs::create_directories(dir / "empty");

@@ -3,6 +3,7 @@
 
 #include "study/state/campaign_survey.hpp"
 #include "study/commands/report_freshness.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "tests/study/support/study_test_support.hpp"
 
 using namespace capsule::study;
@@ -14,7 +15,7 @@ TEST_CASE("study compare warns about a report older than its members", "[study]"
   doc["analysis"] = {{"fits", {"response"}}, {"figures", false}};
   testing::write_text(dir / "c.json", doc.dump());
   REQUIRE(testing::run_study({"run", "c.json"}, dir).exit_code == 0);
-  CHECK(stale_report_warning(survey_campaign((dir / "c.json").string(), dir / "results"))->find("no report yet") !=
+  CHECK(stale_report_warning(survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue))->find("no report yet") !=
         std::string::npos);
   REQUIRE(testing::run_study({"report", "c.json"}, dir).exit_code == 0);
 
@@ -23,7 +24,7 @@ TEST_CASE("study compare warns about a report older than its members", "[study]"
   CHECK(fresh.output.find("warning:") == std::string::npos);
 
   // A member rerun after the report: its file is newer than fits.json.
-  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   const fs::path h5 = s.layout.member(s.members[1]).h5;
   fs::last_write_time(h5, fs::last_write_time(s.layout.report_dir() / "fits.json") + std::chrono::seconds(5));
   const auto stale = testing::run_study({"compare", "c.json"}, dir);

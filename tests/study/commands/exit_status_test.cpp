@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "study/state/campaign_survey.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "tests/study/support/study_test_support.hpp"
 
 using namespace capsule::study;
@@ -75,7 +76,7 @@ TEST_CASE("study status and report exit 4 while members are missing, 0 when all 
   CHECK(testing::run_study({"report", "c.json"}, dir).exit_code == 0);
 
   // One member's files removed: missing again (not failed).
-  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   clear_for_rerun(s.layout.member(s.members[1]));
   CHECK(testing::run_study({"status", "c.json"}, dir).exit_code == 4);
   CHECK(testing::run_study({"report", "c.json"}, dir).exit_code == 4);

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "study/state/campaign_survey.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "tests/study/support/study_test_support.hpp"
 
 using namespace capsule::study;
@@ -18,8 +19,8 @@ TEST_CASE("study report skips a member file that belongs to another member", "[s
   REQUIRE(testing::run_study({"run", "a.json"}, dir).exit_code == 0);
   REQUIRE(testing::run_study({"run", "b.json"}, dir).exit_code == 0);
 
-  const CampaignSurvey sa = survey_campaign((dir / "a.json").string(), dir / "results");
-  const CampaignSurvey sb = survey_campaign((dir / "b.json").string(), dir / "results");
+  const CampaignSurvey sa = survey_campaign((dir / "a.json").string(), dir / "results", slurm_queue);
+  const CampaignSurvey sb = survey_campaign((dir / "b.json").string(), dir / "results", slurm_queue);
   // b's second member now holds a's member file.
   const fs::path target = sb.layout.member(sb.members[1]).h5;
   fs::copy_file(sa.layout.member(sa.members[0]).h5, target, fs::copy_options::overwrite_existing);

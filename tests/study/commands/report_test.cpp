@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "study/state/campaign_survey.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "tests/study/support/study_test_support.hpp"
 
 using namespace capsule::study;
@@ -20,7 +21,7 @@ TEST_CASE("study report writes the campaign's report from its members", "[study]
   INFO(report.output);
   CHECK(report.exit_code == 0);
 
-  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   const fs::path fits = s.layout.report_dir() / "fits.json";
   REQUIRE(fs::exists(fits));
   const std::string text = testing::read_text(fits);
@@ -34,7 +35,7 @@ TEST_CASE("study report of a campaign still under way names the members it lacks
   auto doc = testing::tiny_campaign("report_incomplete", {0.02, 0.05}, 0.3, 0);
   doc["analysis"] = {{"fits", {"response"}}, {"figures", false}};
   testing::write_text(dir / "c.json", doc.dump());
-  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   REQUIRE(s.members.size() == 2);
   const std::size_t ran = s.members[0].scene.at("Ca").get<double>() == 0.02 ? 0 : 1, lacking = 1 - ran;
 
@@ -66,7 +67,7 @@ TEST_CASE("study report of a campaign still under way names the members it lacks
 TEST_CASE("study report of a campaign that never ran writes no figures and says so", "[study]") {
   const fs::path dir = testing::scratch_dir("report_never_ran");
   testing::write_text(dir / "c.json", testing::tiny_campaign("never_ran", {0.02, 0.05}, 0.3, 0).dump());
-  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   const auto report = testing::run_study({"report", "c.json"}, dir);
   INFO(report.output);
   CHECK_THAT(report.output, Catch::Contains("figures skipped: no member of this campaign has a member file yet"));

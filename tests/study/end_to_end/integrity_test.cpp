@@ -10,6 +10,7 @@
 
 #include "build_info.hpp"
 #include "study/state/campaign_survey.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "study/run/provenance.hpp"
 #include "study/state/results_layout.hpp"
 #include "study/run/run_lock.hpp"
@@ -61,7 +62,7 @@ TEST_CASE("hostile results paths reach GNU Parallel and the Slurm script only as
     const auto run = testing::run_study({"run", "c.json", "--results=" + results}, dir);
     INFO(run.output);
     CHECK(run.exit_code == 0);
-    const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / results);
+    const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / results, slurm_queue);
     CHECK(s.count(MemberState::complete) == 2);
 
     // The Slurm script of the same folder: valid bash, and its task runs a member there.
@@ -98,7 +99,7 @@ TEST_CASE("a member file held locked by another process is reported unreadable, 
   const fs::path dir = testing::scratch_dir("locked_member");
   testing::write_text(dir / "c.json", testing::tiny_campaign("locked", {0.02, 0.03}, 0.3, 0).dump());
   REQUIRE(testing::run_study({"run", "c.json"}, dir).exit_code == 0);
-  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   const MemberPaths p = s.layout.member(s.members[0]);
   const std::string before = testing::read_text(p.h5);
   {
@@ -122,7 +123,7 @@ TEST_CASE("a member file held locked by another process is reported unreadable, 
 TEST_CASE("a member folder that cannot be looked into is unreadable, not new", "[study][integrity]") {
   const fs::path dir = testing::scratch_dir("unreadable_folder");
   testing::write_text(dir / "c.json", testing::tiny_campaign("folder", {0.02}, 0.3, 0).dump());
-  const CampaignSurvey s0 = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey s0 = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   // A file where the members folder should be: every lookup below it fails with ENOTDIR (as
   // root, which passes every permission check, this is the failure a test can make).
   fs::create_directories(s0.layout.root);
@@ -141,7 +142,7 @@ TEST_CASE("a corrupt member file is refused by reuse and by report; the previous
   testing::write_text(dir / "second.json", testing::tiny_campaign("second", {0.02}, 0.3, 0).dump());
   REQUIRE(testing::run_study({"run", "first.json"}, dir).exit_code == 0);
   REQUIRE(testing::run_study({"report", "first.json"}, dir).exit_code == 0);
-  const CampaignSurvey s = survey_campaign((dir / "first.json").string(), dir / "results");
+  const CampaignSurvey s = survey_campaign((dir / "first.json").string(), dir / "results", slurm_queue);
   const MemberPaths p = s.layout.member(s.members[0]);
   const fs::path fits = s.layout.report_dir() / "fits.json";
   const std::string good_report = testing::read_text(fits);
@@ -202,7 +203,7 @@ TEST_CASE("GNU Parallel's own failure and an unreachable host are named, exit 1"
     // GNU Parallel's joblog keeps a job's last try only, so a host whose members all ran
     // elsewhere on retry leaves no row to name it by; what counts is that nothing was lost.
     CHECK(run.exit_code == 0);
-    CHECK(survey_campaign((dir / "c.json").string(), dir / "results").count(MemberState::complete) == 4);
+    CHECK(survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue).count(MemberState::complete) == 4);
   }
   SECTION("only a host that refuses the connection: exit 1, each member named") {
     testing::write_text(dir / "hosts", "1/dead\n");
@@ -218,7 +219,7 @@ TEST_CASE("GNU Parallel's own failure and an unreachable host are named, exit 1"
 TEST_CASE("study export takes the run lock: during a run it exits 5 and writes no job list", "[study][integrity]") {
   const fs::path dir = testing::scratch_dir("export_lock");
   testing::write_text(dir / "c.json", testing::tiny_campaign("xlock", {0.02}, 0.3, 0).dump());
-  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   fs::create_directories(s.layout.root);
   const RunLock held(s.layout.lock_file(), s.layout.running_info(), {});  // as a `study run` holds it
   const auto exported = testing::run_study({"export", "c.json", "--slurm"}, dir);

@@ -9,6 +9,7 @@
 #include "study/run/member_job.hpp"
 #include "study/run/shell_quote.hpp"
 #include "study/state/campaign_survey.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "tests/study/support/study_test_support.hpp"
 
 using namespace capsule::study;
@@ -47,7 +48,7 @@ TEST_CASE("capsule version says what its member files record", "[study]") {
 TEST_CASE("run-member starts no member with a capsule binary rebuilt since the run began", "[study]") {
   const fs::path dir = testing::scratch_dir("binary_changed");
   testing::write_text(dir / "c.json", testing::tiny_campaign("binary_changed", {0.02}, 0.3, 0).dump());
-  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   prepare_member_directories(s);
   const MemberPaths p = s.layout.member(s.members[0]);
   const fs::path capsule = stand_in_capsule(dir, "abc123def456");
@@ -61,13 +62,13 @@ TEST_CASE("run-member starts no member with a capsule binary rebuilt since the r
   CHECK_THAT(testing::read_text(p.log), Catch::Contains("not started"));
   CHECK_FALSE(fs::exists(p.partial));
   CHECK_FALSE(fs::exists(p.exit_status));
-  CHECK(survey_campaign((dir / "c.json").string(), dir / "results").conditions[0].state == MemberState::fresh);
+  CHECK(survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue).conditions[0].state == MemberState::fresh);
 
   // The same version: it runs.
   const auto ran = run_member(capsule, p.dir, "abc123def456");
   INFO(ran.output);
   CHECK(ran.exit_code == 0);
-  CHECK(survey_campaign((dir / "c.json").string(), dir / "results").conditions[0].state == MemberState::complete);
+  CHECK(survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue).conditions[0].state == MemberState::complete);
   fs::remove_all(dir);
 }
 
@@ -79,7 +80,7 @@ TEST_CASE("study run hands the capsule binary's version to every member through 
                                       " " + shell_quote(testing::study_binary().string()) + " run c.json </dev/null");
   INFO(run.output);
   CHECK(run.exit_code == 0);
-  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   CHECK_THAT(testing::read_text(s.layout.wrapper()), Catch::Contains("--code-version 'fedcba987654'"));
   CHECK(nlohmann::json::parse(testing::read_text(s.layout.run_json())).at("capsule_code_version") == "fedcba987654");
   fs::remove_all(dir);

@@ -11,6 +11,7 @@
 #include "study/run/campaign_progress.hpp"
 #include "study/run/eta_smoothing.hpp"
 #include "study/state/campaign_survey.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "tests/study/support/study_test_support.hpp"
 
 using namespace capsule::study;
@@ -92,7 +93,7 @@ TEST_CASE("the progress line names the share done, the elapsed time and the ETA"
 TEST_CASE("off a terminal the progress is a plain line per change, on a terminal one redrawn line", "[study]") {
   const fs::path dir = testing::scratch_dir("progress_lines");
   testing::write_text(dir / "c.json", testing::tiny_campaign("lines", {0.01, 0.02}, 1, 1).dump());
-  const CampaignSurvey survey = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey survey = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   ProgressCounts c;
   c.left = 2;
   std::ostringstream plain;

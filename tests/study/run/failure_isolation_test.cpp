@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include "study/state/campaign_survey.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "tests/study/support/study_test_support.hpp"
 
 using namespace capsule::study;
@@ -24,7 +25,7 @@ TEST_CASE("failed and unstable members do not stop the others", "[study]") {
   INFO(run.output);
   CHECK(run.exit_code == 3);  // not every member completed (docs/guide/campaigns.md "Exit status")
 
-  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   REQUIRE(s.members.size() == 3);
   CHECK(s.count(MemberState::complete) == 2);
   CHECK(s.conditions[2].state == MemberState::unstable);

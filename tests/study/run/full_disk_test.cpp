@@ -9,6 +9,7 @@
 
 #include "study/run/shell_quote.hpp"
 #include "study/state/campaign_survey.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "tests/study/support/study_test_support.hpp"
 
 using namespace capsule::study;
@@ -18,7 +19,7 @@ TEST_CASE("a disk that fills while a member writes its restart point leaves the 
           "[study][integrity]") {
   const fs::path dir = testing::scratch_dir("full_disk");
   testing::write_text(dir / "c.json", testing::tiny_campaign("full", {0.02}, 30, 0).dump());
-  CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "template");
+  CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "template", slurm_queue);
   prepare_member_directories(s);
   const std::string member = fs::relative(s.layout.member(s.members[0]).dir, dir / "template").string();
   fs::create_directories(dir / "disk");

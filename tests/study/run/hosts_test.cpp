@@ -5,6 +5,7 @@
 #include <set>
 
 #include "study/state/campaign_survey.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "study/run/joblog.hpp"
 #include "tests/study/support/study_test_support.hpp"
 
@@ -28,7 +29,7 @@ TEST_CASE("members run on every host of a --hosts file", "[study]") {
   CHECK(run.exit_code == 0);
   CHECK(run.output.find("at once per host") != std::string::npos);
 
-  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / results);
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / results, slurm_queue);
   CHECK(s.count(MemberState::complete) == 4);
   const auto log = read_joblog(s.layout.joblog());
   REQUIRE(log.size() == 4);
@@ -51,7 +52,7 @@ TEST_CASE("the hosts file's per-host counts are honoured: 1/host runs one member
   const auto run = testing::run_study({"run", "c.json", "--hosts", "hosts", "--ssh", (dir / "fake-ssh").string()}, dir);
   INFO(run.output);
   REQUIRE(run.exit_code == 0);
-  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   auto log = read_joblog(s.layout.joblog());
   REQUIRE(log.size() == 3);
   std::sort(log.begin(), log.end(), [](const JoblogEntry& a, const JoblogEntry& b) { return a.start < b.start; });

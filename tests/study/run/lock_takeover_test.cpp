@@ -1,5 +1,5 @@
 // A member's lock is held while its owner keeps its heartbeat, on this host too, and only by the
-// process that took it (study/run/member_lock.hpp): an owner stopped long enough to lose it backs
+// process that took it (study/state/member_lock.hpp): an owner stopped long enough to lose it backs
 // off when it wakes, without touching the member's files (solver/io/write_guard.hpp), and the
 // member is continued later from its restart point, not lost.
 #include <catch2/catch.hpp>
@@ -13,9 +13,10 @@
 #include <map>
 #include <thread>
 
-#include "study/run/member_lock.hpp"
+#include "study/state/member_lock.hpp"
 #include "study/run/shell_quote.hpp"
 #include "study/state/campaign_survey.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "study/state/results_layout.hpp"
 #include "study/state/run_record.hpp"
 #include "tests/study/support/study_test_support.hpp"
@@ -51,7 +52,7 @@ TEST_CASE("a stopped member owner whose lock was taken over backs off without to
           "[study][lock]") {
   const fs::path dir = testing::scratch_dir("lock_takeover");
   testing::write_text(dir / "c.json", testing::tiny_campaign("takeover", {0.02}, 30, 0).dump());
-  CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   prepare_member_directories(s);
   const MemberPaths p = s.layout.member(s.members[0]);
 
@@ -103,7 +104,7 @@ TEST_CASE("a stopped member owner whose lock was taken over backs off without to
   INFO(again.output);
   CHECK(again.exit_code == 0);
   CHECK_THAT(testing::read_text(p.log), Catch::Contains("continuing from the restart point"));
-  CHECK(survey_campaign((dir / "c.json").string(), dir / "results").conditions[0].state == MemberState::complete);
+  CHECK(survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue).conditions[0].state == MemberState::complete);
   fs::remove_all(dir);
 }
 

@@ -6,6 +6,7 @@
 #include "study/run/member_job.hpp"
 #include "study/run/shell_quote.hpp"
 #include "study/state/campaign_survey.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "tests/study/support/study_test_support.hpp"
 
 using namespace capsule::study;
@@ -24,11 +25,11 @@ testing::CommandResult run_member(const std::string& member_dir) {
 TEST_CASE("a complete member named with a trailing slash or dot parts is not run again", "[study][lock]") {
   const fs::path dir = testing::scratch_dir("member_spelling");
   testing::write_text(dir / "c.json", testing::tiny_campaign("spelling", {0.05}, 1, 0).dump());
-  CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   prepare_member_directories(s);
   const MemberPaths p = s.layout.member(s.members[0]);
   REQUIRE(run_member(p.dir.string()).exit_code == 0);
-  REQUIRE(survey_campaign((dir / "c.json").string(), dir / "results").conditions[0].state == MemberState::complete);
+  REQUIRE(survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue).conditions[0].state == MemberState::complete);
   const std::string before = testing::read_text(p.h5);
   const auto time_before = fs::last_write_time(p.h5);
 
@@ -44,14 +45,14 @@ TEST_CASE("a complete member named with a trailing slash or dot parts is not run
     CHECK(fs::last_write_time(p.h5) == time_before);
   }
   CHECK(normal_member_dir(p.dir.string() + "/") == p.dir);
-  CHECK(survey_campaign((dir / "c.json").string(), dir / "results").conditions[0].state == MemberState::complete);
+  CHECK(survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue).conditions[0].state == MemberState::complete);
   fs::remove_all(dir);
 }
 
 TEST_CASE("a member folder whose name does not end in its scene's id is refused before anything runs", "[study][lock]") {
   const fs::path dir = testing::scratch_dir("member_misnamed");
   testing::write_text(dir / "c.json", testing::tiny_campaign("misnamed", {0.05}, 1, 0).dump());
-  CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   prepare_member_directories(s);
   const MemberPaths p = s.layout.member(s.members[0]);
   const fs::path renamed = p.dir.parent_path() / "Ca0.05-0123456789abcdef";

@@ -1,5 +1,5 @@
 // A member runs at most once at a time and never after it is complete, whichever engine starts
-// it (study/run/member_lock.hpp, study/run/member_job.hpp); a stop by signal leaves a restart point that
+// it (study/state/member_lock.hpp, study/run/member_job.hpp); a stop by signal leaves a restart point that
 // the next run continues from.
 #include <catch2/catch.hpp>
 
@@ -12,7 +12,8 @@
 #include <thread>
 
 #include "study/state/campaign_survey.hpp"
-#include "study/run/member_lock.hpp"
+#include "study/slurm/slurm_queue.hpp"
+#include "study/state/member_lock.hpp"
 #include "study/state/run_record.hpp"
 #include "study/run/shell_quote.hpp"
 #include "tests/study/support/study_test_support.hpp"
@@ -51,7 +52,7 @@ TEST_CASE("a member already running is left alone, a complete one is never rerun
   const fs::path dir = testing::scratch_dir("member_lock");
   // Long enough (several seconds) to be caught running.
   testing::write_text(dir / "c.json", testing::tiny_campaign("lock", {0.02}, 30, 0).dump());
-  CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   prepare_member_directories(s);
   const MemberPaths p = s.layout.member(s.members[0]);
 
@@ -63,13 +64,13 @@ TEST_CASE("a member already running is left alone, a complete one is never rerun
   CHECK(second.exit_code == 0);
   CHECK(second.output.find("is running on " + host_name()) != std::string::npos);
   CHECK(second.output.find("left alone") != std::string::npos);
-  s = survey_campaign((dir / "c.json").string(), dir / "results");
+  s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   CHECK(s.conditions[0].state == MemberState::running);
 
   int status = 0;
   ::waitpid(first, &status, 0);
   CHECK(WEXITSTATUS(status) == 0);
-  REQUIRE(survey_campaign((dir / "c.json").string(), dir / "results").conditions[0].state == MemberState::complete);
+  REQUIRE(survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue).conditions[0].state == MemberState::complete);
   CHECK_FALSE(fs::exists(member_lock_file(p.dir)));
   const std::string before = testing::read_text(p.h5);
   const auto stat_before = fs::last_write_time(p.h5);
@@ -120,7 +121,7 @@ TEST_CASE("a stale member lock is taken over; another host's lock holds while it
 TEST_CASE("SIGTERM to a running member writes a restart point; the next run continues it", "[study][lock]") {
   const fs::path dir = testing::scratch_dir("member_sigterm");
   testing::write_text(dir / "c.json", testing::tiny_campaign("sigterm", {0.02}, 30, 0).dump());
-  CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   prepare_member_directories(s);
   const MemberPaths p = s.layout.member(s.members[0]);
   const pid_t run = start_run_member(p.dir);
@@ -134,13 +135,13 @@ TEST_CASE("SIGTERM to a running member writes a restart point; the next run cont
   REQUIRE(fs::exists(p.restart));
   CHECK_FALSE(fs::exists(p.exit_status));  // not an end
   CHECK(testing::read_text(p.log).find("stopped by signal 15") != std::string::npos);
-  s = survey_campaign((dir / "c.json").string(), dir / "results");
+  s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   CHECK(s.conditions[0].state == MemberState::interrupted);
 
   const auto again = run_member_now(p.dir);
   INFO(again.output);
   CHECK(again.exit_code == 0);
   CHECK(testing::read_text(p.log).find("continuing from the restart point") != std::string::npos);
-  CHECK(survey_campaign((dir / "c.json").string(), dir / "results").conditions[0].state == MemberState::complete);
+  CHECK(survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue).conditions[0].state == MemberState::complete);
   fs::remove_all(dir);
 }

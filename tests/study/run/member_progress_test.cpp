@@ -10,6 +10,7 @@
 #include "solver/io/member_file.hpp"
 #include "solver/scene/scene.hpp"
 #include "study/state/campaign_survey.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "study/plan/plan_table.hpp"
 #include "tests/study/support/study_test_support.hpp"
 
@@ -37,7 +38,7 @@ void write_progress(const MemberPaths& p, long pid, const std::string& on_host) 
 TEST_CASE("study status: a live member is running with its kt and ETA, a dead one interrupted", "[study]") {
   const fs::path dir = testing::scratch_dir("running");
   testing::write_text(dir / "c.json", testing::tiny_campaign("running", {0.01, 0.02, 0.03}, 1, 1).dump(2));
-  CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   prepare_member_directories(s);
   const MemberPaths live = s.layout.member(s.members[0]), dead = s.layout.member(s.members[1]);
   testing::write_text(live.partial, "x");
@@ -46,7 +47,7 @@ TEST_CASE("study status: a live member is running with its kt and ETA, a dead on
   write_progress(dead, 999999999, host());  // no such process
   fs::last_write_time(dead.partial, fs::file_time_type::clock::now() - std::chrono::hours(1));
 
-  s = survey_campaign((dir / "c.json").string(), dir / "results");
+  s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   CHECK(s.conditions[0].state == MemberState::running);
   CHECK(s.conditions[0].reason == "shear, kt 1.25 of 5, ETA 3m10s");
   CHECK(s.conditions[1].state == MemberState::interrupted);
@@ -63,7 +64,7 @@ TEST_CASE("study status: a live member is running with its kt and ETA, a dead on
 TEST_CASE("study run continues an interrupted member from its restart point and logs its progress", "[study]") {
   const fs::path dir = testing::scratch_dir("restart");
   testing::write_text(dir / "c.json", testing::tiny_campaign("restart", {0.02, 0.04}, 2, 1).dump(2));
-  CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   prepare_member_directories(s);
   const MemberPaths p = s.layout.member(s.members[0]);
   // The member killed after a restart point at step 600 (as a machine losing power would).
@@ -76,7 +77,7 @@ TEST_CASE("study run continues an interrupted member from its restart point and 
   INFO(killed.output);
   REQUIRE(killed.exit_code == 1);
   REQUIRE(fs::exists(p.restart));
-  s = survey_campaign((dir / "c.json").string(), dir / "results");
+  s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   CHECK(s.conditions[0].state == MemberState::interrupted);
   CHECK(s.conditions[0].reason.find("continues it from its restart point") != std::string::npos);
 

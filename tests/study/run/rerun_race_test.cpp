@@ -3,9 +3,10 @@
 // between the survey and the clearing keeps its work.
 #include <catch2/catch.hpp>
 
-#include "study/run/member_lock.hpp"
+#include "study/state/member_lock.hpp"
 #include "study/run/shell_quote.hpp"
 #include "study/state/campaign_survey.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "tests/study/support/study_test_support.hpp"
 
 using namespace capsule::study;
@@ -15,12 +16,12 @@ TEST_CASE("a member a stand-in task completes or holds between the survey and th
           "[study][lock]") {
   const fs::path dir = testing::scratch_dir("clear_race");
   testing::write_text(dir / "c.json", testing::tiny_campaign("race", {0.02, 0.05}, 0.3, 0).dump());
-  CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   prepare_member_directories(s);
   const MemberPaths done = s.layout.member(s.members[0]), held = s.layout.member(s.members[1]);
   // A failed attempt each: both need running at the survey.
   for (const auto& p : {done, held}) testing::write_text(p.exit_status, "1\n");
-  s = survey_campaign((dir / "c.json").string(), dir / "results");
+  s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   REQUIRE(s.conditions[0].state == MemberState::failed);
   REQUIRE(s.conditions[1].state == MemberState::failed);
 
@@ -46,12 +47,12 @@ TEST_CASE("a member a stand-in task completes or holds between the survey and th
 TEST_CASE("a member that still needs running is cleared under its lock and released", "[study][lock]") {
   const fs::path dir = testing::scratch_dir("clear_plain");
   testing::write_text(dir / "c.json", testing::tiny_campaign("plain", {0.02}, 0.3, 0).dump());
-  CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   prepare_member_directories(s);
   const MemberPaths p = s.layout.member(s.members[0]);
   testing::write_text(p.exit_status, "1\n");
   testing::write_text(p.partial, "stale");
-  s = survey_campaign((dir / "c.json").string(), dir / "results");
+  s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   const auto still = clear_members_to_rerun(s, {0}, false, false);
   CHECK(still == std::vector<std::size_t>{0});
   CHECK_FALSE(fs::exists(p.exit_status));

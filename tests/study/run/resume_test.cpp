@@ -11,6 +11,7 @@
 
 #include "study/campaign/campaign.hpp"
 #include "study/state/campaign_survey.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "tests/study/support/study_test_support.hpp"
 
 using namespace capsule::study;
@@ -67,7 +68,7 @@ TEST_CASE("a run killed with SIGKILL resumes: only incomplete members rerun", "[
     ::_exit(127);
   }
 
-  const CampaignSurvey before = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey before = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   // Wait until at least one member is complete and another is mid-run (its .partial exists),
   // then kill. 60 s bounds a stuck run; the members need about 3 s in all.
   bool mid_run = false;
@@ -86,7 +87,7 @@ TEST_CASE("a run killed with SIGKILL resumes: only incomplete members rerun", "[
   ::waitpid(child, &status, 0);
   REQUIRE(mid_run);
 
-  const CampaignSurvey killed = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey killed = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   std::map<std::string, fs::file_time_type> complete_before;
   std::size_t incomplete = 0;
   for (std::size_t i = 0; i < killed.members.size(); ++i) {
@@ -104,7 +105,7 @@ TEST_CASE("a run killed with SIGKILL resumes: only incomplete members rerun", "[
   CHECK(rerun.exit_code == 0);
   CHECK(rerun.output.find("running " + std::to_string(incomplete) + " of 4 members") != std::string::npos);
 
-  const CampaignSurvey after = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey after = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   CHECK(after.count(MemberState::complete) == 4);
   for (const auto& m : after.members) {
     const MemberPaths p = after.layout.member(m);
@@ -134,7 +135,7 @@ TEST_CASE("after kill -9 of study, the next run says the run is still going, wit
     ::execl(study.c_str(), study.c_str(), "run", "c.json", static_cast<char*>(nullptr));
     ::_exit(127);
   }
-  const CampaignSurvey before = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey before = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   const MemberPaths p = before.layout.member(before.members[0]);
   bool running = false;
   for (int i = 0; i < 3000 && !running; ++i) {
@@ -166,7 +167,7 @@ TEST_CASE("a run over a complete campaign leaves its members' scene.json as they
   const auto first = testing::run_study({"run", "c.json"}, dir);
   INFO(first.output);
   REQUIRE(first.exit_code == 0);
-  const CampaignSurvey survey = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey survey = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   const fs::path scene = survey.layout.member(survey.members[0]).scene;
   const std::string shipped = testing::read_text(scene) + "\n";  // as another version wrote it
   testing::write_text(scene, shipped);

@@ -1,10 +1,11 @@
 // A member that another campaign under the same results folder finished (same member id: same
 // canonical scene and physics version) is copied by `study run`, not run again, and `study plan`
-// leaves it out of the cost (finished_elsewhere.hpp). An unfinished one is not copied, and
+// leaves it out of the cost (member_reuse.hpp). An unfinished one is not copied, and
 // --no-reuse runs every member.
 #include <catch2/catch.hpp>
 
 #include "study/state/campaign_survey.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "study/run/joblog.hpp"
 #include "tests/study/support/study_test_support.hpp"
 
@@ -28,7 +29,7 @@ TEST_CASE("study run copies a member another campaign finished instead of runnin
   const auto first = testing::run_study({"run", "first.json", "-j", "1"}, dir);
   INFO(first.output);
   REQUIRE(first.exit_code == 0);
-  const CampaignSurvey a = survey_campaign((dir / "first.json").string(), dir / "results");
+  const CampaignSurvey a = survey_campaign((dir / "first.json").string(), dir / "results", slurm_queue);
 
   SECTION("plan names the copy and leaves it out of the cost; run copies it and runs only the other") {
     const auto plan = testing::run_study({"plan", "second.json"}, dir);
@@ -42,7 +43,7 @@ TEST_CASE("study run copies a member another campaign finished instead of runnin
     INFO(run.output);
     CHECK(run.exit_code == 0);
     CHECK_THAT(run.output, Catch::Contains("copied " + member_with_ca(a, 0.02).dir_name() + " from first"));
-    const CampaignSurvey b = survey_campaign((dir / "second.json").string(), dir / "results");
+    const CampaignSurvey b = survey_campaign((dir / "second.json").string(), dir / "results", slurm_queue);
     CHECK(b.count(MemberState::complete) == 2);
     CHECK(read_joblog(b.layout.joblog()).size() == 1);  // only Ca 0.03 ran
     const MemberPaths copy = b.layout.member(member_with_ca(b, 0.02));
@@ -61,7 +62,7 @@ TEST_CASE("study run copies a member another campaign finished instead of runnin
     CHECK(exported.exit_code == 0);
     CHECK_THAT(exported.output, Catch::Contains("copied " + member_with_ca(a, 0.02).dir_name() + " from first") &&
                                     Catch::Contains("1 of 2 members to run"));
-    const CampaignSurvey b = survey_campaign((dir / "second.json").string(), dir / "results");
+    const CampaignSurvey b = survey_campaign((dir / "second.json").string(), dir / "results", slurm_queue);
     CHECK(b.count(MemberState::complete) == 1);
   }
 
@@ -70,7 +71,7 @@ TEST_CASE("study run copies a member another campaign finished instead of runnin
     INFO(run.output);
     CHECK(run.exit_code == 0);
     CHECK_THAT(run.output, !Catch::Contains("copied "));
-    const CampaignSurvey b = survey_campaign((dir / "second.json").string(), dir / "results");
+    const CampaignSurvey b = survey_campaign((dir / "second.json").string(), dir / "results", slurm_queue);
     CHECK(read_joblog(b.layout.joblog()).size() == 2);
   }
 
@@ -84,7 +85,7 @@ TEST_CASE("study run copies a member another campaign finished instead of runnin
     INFO(run.output);
     CHECK(run.exit_code == 0);
     CHECK_THAT(run.output, !Catch::Contains("copied "));
-    const CampaignSurvey b = survey_campaign((dir / "second.json").string(), dir / "results");
+    const CampaignSurvey b = survey_campaign((dir / "second.json").string(), dir / "results", slurm_queue);
     CHECK(read_joblog(b.layout.joblog()).size() == 2);
   }
   fs::remove_all(dir);

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include "study/state/campaign_survey.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "study/campaign/member_filter.hpp"
 #include "tests/study/support/study_test_support.hpp"
 
@@ -26,7 +27,7 @@ TEST_CASE("study run --case runs only that case's members; an unknown case is re
   const auto run = testing::run_study({"run", "c.json", "--case", "stiff", "-j", "1"}, dir);
   INFO(run.output);
   CHECK(run.exit_code == 4);  // the campaign is not complete: the flat members have not run
-  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   REQUIRE(s.members.size() == 4);
   for (std::size_t i = 0; i < s.members.size(); ++i) {
     INFO(s.members[i].dir_name());
@@ -55,7 +56,7 @@ TEST_CASE("study run --where runs only the members with that scene value; a valu
   const auto run = testing::run_study({"run", "c.json", "--where", "E_b=1e-1", "--where", "Ca=0.02", "-j", "1"}, dir);
   INFO(run.output);
   CHECK(run.exit_code == 4);  // the other members have not run
-  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   REQUIRE(s.members.size() == 4);
   int complete = 0;
   for (std::size_t i = 0; i < s.members.size(); ++i) {

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "study/state/campaign_survey.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "study/run/joblog.hpp"
 #include "tests/study/support/study_test_support.hpp"
 
@@ -17,7 +18,7 @@ TEST_CASE("joblog and run records keep every run", "[study]") {
   const fs::path dir = testing::scratch_dir("history");
   testing::write_text(dir / "c.json", testing::tiny_campaign("history", {0.05}, 1, 1).dump());
   REQUIRE(testing::run_study({"run", "c.json"}, dir).exit_code == 0);
-  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   fs::remove(s.layout.member(s.members[0]).h5);  // so the second run runs it again
   REQUIRE(testing::run_study({"run", "c.json"}, dir).exit_code == 0);
 

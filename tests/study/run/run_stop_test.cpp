@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "study/state/campaign_survey.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "study/state/exit_status.hpp"
 #include "tests/study/support/study_test_support.hpp"
 
@@ -52,7 +53,7 @@ TEST_CASE("SIGTERM to study run stops it: the campaigns after the running one ar
   testing::write_text(dir / "second.json", testing::tiny_campaign("stop_second", {0.02}, 0.3, 0).dump());
   const fs::path log = dir / "study.log";
   const pid_t study = start_study_run(dir, log, testing::capsule_binary(), {"first.json", "second.json", "-j", "1"});
-  const CampaignSurvey first = survey_campaign((dir / "first.json").string(), dir / "results");
+  const CampaignSurvey first = survey_campaign((dir / "first.json").string(), dir / "results", slurm_queue);
   const MemberPaths p = first.layout.member(first.members[0]);
   bool running = false;
   for (int i = 0; i < 3000 && !running; ++i) {  // up to 30 s for GNU Parallel and capsule to start
@@ -69,11 +70,11 @@ TEST_CASE("SIGTERM to study run stops it: the campaigns after the running one ar
   REQUIRE(WIFEXITED(status));
   CHECK(WEXITSTATUS(status) == exit_members_missing);
   CHECK_THAT(output, Catch::Contains("stopped by signal 15 (SIGTERM): 1 campaign not started: second.json"));
-  const CampaignSurvey second = survey_campaign((dir / "second.json").string(), dir / "results");
+  const CampaignSurvey second = survey_campaign((dir / "second.json").string(), dir / "results", slurm_queue);
   CHECK_FALSE(fs::exists(second.layout.member(second.members[0]).h5));
   CHECK_FALSE(fs::exists(second.layout.member(second.members[0]).partial));
   // The stopped member can continue: it was interrupted, not ended.
-  CHECK(survey_campaign((dir / "first.json").string(), dir / "results").conditions[0].state ==
+  CHECK(survey_campaign((dir / "first.json").string(), dir / "results", slurm_queue).conditions[0].state ==
         MemberState::interrupted);
   fs::remove_all(dir);
 }

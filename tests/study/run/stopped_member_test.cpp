@@ -4,6 +4,7 @@
 
 #include "solver/io/member_file.hpp"
 #include "study/state/campaign_survey.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "tests/study/support/study_test_support.hpp"
 
 using namespace capsule::study;
@@ -13,7 +14,7 @@ TEST_CASE("a stopped member is kept and rerun only with --rerun-stopped", "[stud
   const fs::path dir = testing::scratch_dir("stopped");
   testing::write_text(dir / "c.json", testing::tiny_campaign("stopped", {0.05}, 1, 1).dump(2));
   REQUIRE(testing::run_study({"run", "c.json"}, dir).exit_code == 0);
-  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   // The member's file as the capsule writes it when the solver throws ("stopped: ...").
   const MemberPaths p = s.layout.member(s.members[0]);
   fs::remove(p.h5);
@@ -31,7 +32,7 @@ TEST_CASE("a stopped member is kept and rerun only with --rerun-stopped", "[stud
   INFO(rerun.output);
   CHECK(rerun.output.find("nothing to run") != std::string::npos);
   CHECK(rerun.exit_code == 3);
-  CHECK(survey_campaign((dir / "c.json").string(), dir / "results").conditions[0].state == MemberState::stopped);
+  CHECK(survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue).conditions[0].state == MemberState::stopped);
 
   const auto forced = testing::run_study({"run", "c.json", "--rerun-stopped"}, dir);
   INFO(forced.output);

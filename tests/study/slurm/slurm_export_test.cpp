@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include "study/state/campaign_survey.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "study/run/shell_quote.hpp"
 #include "study/run/script_path.hpp"
 #include "study/slurm/slurm_export.hpp"
@@ -24,7 +25,7 @@ TEST_CASE("the Slurm script passes bash -n and task i runs member i", "[study]")
   INFO(exported.output);
   REQUIRE(exported.exit_code == 0);
 
-  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   const fs::path script = s.layout.slurm_dir() / "capsule.sbatch";
   REQUIRE(fs::exists(script));
   const std::string text = testing::read_text(script);
@@ -36,7 +37,7 @@ TEST_CASE("the Slurm script passes bash -n and task i runs member i", "[study]")
   const auto task = testing::run_shell("SLURM_ARRAY_TASK_ID=1 bash " + shell_quote(script.string()));
   INFO(task.output);
   CHECK(task.exit_code == 0);
-  const CampaignSurvey after = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey after = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   CHECK(after.conditions[0].state == MemberState::fresh);
   CHECK(after.conditions[1].state == MemberState::complete);
   CHECK(after.conditions[2].state == MemberState::fresh);
@@ -81,7 +82,7 @@ TEST_CASE("Slurm resources: CPUs from --threads or the dimension, not this machi
   doc["base"]["resolution"] = {{"a", 4}, {"mesh_level", 2}};
   testing::write_text(dir / "c.json", doc.dump());
   REQUIRE(testing::run_study({"export", "c.json", "--slurm"}, dir).exit_code == 0);
-  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   const fs::path script = s.layout.slurm_dir() / "capsule.sbatch";
   std::string text = testing::read_text(script);
   INFO(text);
@@ -115,7 +116,7 @@ TEST_CASE("with nothing pending the Slurm script has no --array and exits 0", "[
   INFO(exported.output);
   REQUIRE(exported.exit_code == 0);
   CHECK(exported.output.find("0 of 1 members to run: nothing to submit") != std::string::npos);
-  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   const fs::path script = s.layout.slurm_dir() / "capsule.sbatch";
   const std::string text = testing::read_text(script);
   CHECK(text.find("#SBATCH --array") == std::string::npos);
@@ -135,7 +136,7 @@ TEST_CASE("an array over --array-max members is split into scripts Slurm accepts
                                            dir);
   INFO(exported.output);
   REQUIRE(exported.exit_code == 0);
-  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   const std::string first = testing::read_text(s.layout.slurm_dir() / "capsule-0.sbatch");
   const std::string second = testing::read_text(s.layout.slurm_dir() / "capsule-1.sbatch");
   // Task ids stay below Slurm's default MaxArraySize (1001); the second script starts at 1000.
@@ -155,7 +156,7 @@ TEST_CASE("an array over --array-max members is split into scripts Slurm accepts
                                        shell_quote((s.layout.slurm_dir() / "capsule-1.sbatch").string()) + " 2>&1");
   INFO(task.output);
   CHECK(task.exit_code == 0);
-  CHECK(survey_campaign((dir / "c.json").string(), dir / "results").conditions[1099].state == MemberState::complete);
+  CHECK(survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue).conditions[1099].state == MemberState::complete);
   // A name Slurm would not take, or a line break, is refused before anything is written.
   CHECK(testing::run_study({"export", "c.json", "--slurm", "-p", "a b"}, dir).exit_code == 2);
   CHECK(testing::run_study({"export", "c.json", "--slurm", "--sbatch=--x\nrm -rf /"}, dir).exit_code == 2);
@@ -167,7 +168,7 @@ TEST_CASE("members whose Slurm task waits in the queue are queued: status says s
   const fs::path dir = testing::scratch_dir("slurm_queued");
   testing::write_text(dir / "c.json", testing::tiny_campaign("queued", {0.01, 0.02, 0.03}, 1, 1).dump());
   REQUIRE(testing::run_study({"export", "c.json", "--slurm"}, dir).exit_code == 0);
-  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   const std::string job = nlohmann::json::parse(testing::read_text(s.layout.slurm_dir() / "export.json"))["scripts"][0]
                               ["job_name"];
   // A stand-in squeue: task 1 held in the queue, task 2 running.

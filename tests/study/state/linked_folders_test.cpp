@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include "study/state/campaign_survey.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "tests/study/support/study_test_support.hpp"
 
 using namespace capsule::study;
@@ -14,7 +15,7 @@ TEST_CASE("a member folder linked to its sibling is unreadable: the sibling's co
   const fs::path dir = testing::scratch_dir("linked_member");
   testing::write_text(dir / "c.json", testing::tiny_campaign("linked", {0.02, 0.05}, 0.3, 0).dump());
   REQUIRE(testing::run_study({"run", "c.json"}, dir).exit_code == 0);
-  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   const MemberPaths sibling = s.layout.member(s.members[0]), linked = s.layout.member(s.members[1]);
   const std::string complete = testing::read_text(sibling.h5);
   fs::remove_all(linked.dir);
@@ -30,7 +31,7 @@ TEST_CASE("a member folder linked to its sibling is unreadable: the sibling's co
   }
   CHECK(testing::read_text(sibling.h5) == complete);
   CHECK(fs::is_symlink(linked.dir));
-  CHECK(survey_campaign((dir / "c.json").string(), dir / "results").conditions[0].state == MemberState::complete);
+  CHECK(survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue).conditions[0].state == MemberState::complete);
   fs::remove_all(dir);
 }
 
@@ -55,6 +56,6 @@ TEST_CASE("a members folder that is a link to another disk is refused, naming th
   const auto linked = testing::run_study({"run", "c.json"}, dir);
   INFO(linked.output);
   CHECK(linked.exit_code == 0);
-  CHECK(survey_campaign((dir / "c.json").string(), dir / "results").conditions[0].state == MemberState::complete);
+  CHECK(survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue).conditions[0].state == MemberState::complete);
   fs::remove_all(dir);
 }

@@ -15,6 +15,7 @@
 #include "solver/scene/version.hpp"
 #include "study/run/provenance.hpp"
 #include "study/state/campaign_survey.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "tests/study/support/study_test_support.hpp"
 
 using namespace capsule::study;
@@ -43,7 +44,7 @@ TEST_CASE("shipped results match their campaigns: no orphaned member or stale fo
     if (!fs::exists(root / "members")) continue;
     ++shipped;
     INFO(entry.path().string());
-    const CampaignSurvey s = survey_campaign(entry.path().string(), results);
+    const CampaignSurvey s = survey_campaign(entry.path().string(), results, slurm_queue);
     // Provenance: a campaign on today's physics ships only members of today's physics made by a
     // committed build (a `-dirty` code_version cannot be reproduced from any commit).
     const std::string pinned = s.campaign.base.value("physics_version", std::string());

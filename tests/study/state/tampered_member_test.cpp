@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "study/state/campaign_survey.hpp"
+#include "study/slurm/slurm_queue.hpp"
 #include "study/state/member_verification.hpp"
 #include "tests/study/support/study_test_support.hpp"
 #include "tests/support/hdf5_damage.hpp"
@@ -65,7 +66,7 @@ TEST_CASE("a member file whose content hash was removed and data edited is refus
   doc["analysis"] = {{"fits", {"response"}}, {"figures", false}};
   testing::write_text(dir / "c.json", doc.dump());
   REQUIRE(testing::run_study({"run", "c.json"}, dir).exit_code == 0);
-  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   const MemberPaths p = s.layout.member(s.members[0]);
   delete_root_attribute(p.h5, "content_hash");
   edit_series(p.h5, "D_xy");
@@ -94,7 +95,7 @@ TEST_CASE("status, plan and run verify a member file before calling it complete;
   const fs::path dir = testing::scratch_dir("verified_complete");
   testing::write_text(dir / "c.json", testing::tiny_campaign("verified", {0.02}, 0.3, 0).dump());
   REQUIRE(testing::run_study({"run", "c.json"}, dir).exit_code == 0);
-  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   REQUIRE(s.conditions[0].state == MemberState::complete);
   const MemberPaths p = s.layout.member(s.members[0]);
   // Verified once: the record names the file's size, times and hash.
@@ -118,7 +119,7 @@ TEST_CASE("status, plan and run verify a member file before calling it complete;
     CHECK_THAT(out.output, Catch::Contains("unreadable"));
     if (command[0] != "plan") CHECK(out.exit_code != 0);
   }
-  CHECK(survey_campaign((dir / "c.json").string(), dir / "results").conditions[0].state == MemberState::unreadable);
+  CHECK(survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue).conditions[0].state == MemberState::unreadable);
   CHECK(testing::read_text(p.h5) == damaged);  // kept as it is, never rerun over
   CHECK_FALSE(fs::exists(verification_record(p.h5)));
   fs::remove_all(dir);
@@ -128,7 +129,7 @@ TEST_CASE("a verified member file is read whole again only when its size, times 
   const fs::path dir = testing::scratch_dir("verification_record");
   testing::write_text(dir / "c.json", testing::tiny_campaign("record", {0.02}, 0.3, 0).dump());
   REQUIRE(testing::run_study({"run", "c.json"}, dir).exit_code == 0);
-  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results");
+  const CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   const MemberPaths p = s.layout.member(s.members[0]);
   const fs::path record = verification_record(p.h5);
   const std::string recorded = testing::read_text(record);

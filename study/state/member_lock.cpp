@@ -1,4 +1,4 @@
-#include "study/run/member_lock.hpp"
+#include "study/state/member_lock.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>

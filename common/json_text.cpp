@@ -1,4 +1,4 @@
-#include "solver/scene/json_text.hpp"
+#include "common/json_text.hpp"
 
 #include <cstdio>
 #include <set>

@@ -1,4 +1,4 @@
-#include "analysis/fit/resolution_ladder.hpp"
+#include "analysis/report/resolution_ladder.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,10 @@
-#include "analysis/fit/bilinear_cases.hpp"
+#include "analysis/report/bilinear_cases.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "analysis/fit/bilinear_fit.hpp"
-#include "analysis/fit/resolution_ladder.hpp"
+#include "analysis/report/resolution_ladder.hpp"
 #include "analysis/report/table.hpp"
 
 namespace capsule::analysis {

@@ -1,4 +1,4 @@
-#include "study/plan/duration_text.hpp"
+#include "study/state/duration_text.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -2,7 +2,7 @@
 // refused with the file name (and, for a duplicate, the key's path).
 #include <catch2/catch.hpp>
 
-#include "solver/scene/json_text.hpp"
+#include "common/json_text.hpp"
 
 using capsule::JsonTextError;
 using capsule::parse_json_text;
