@@ -13,13 +13,15 @@ struct KnownDeviation {
   std::string text;     // what differs and why (Markdown)
   std::string affects;  // the campaigns / claims it moves, in words
   std::vector<std::string> claims;  // the keys of claims.md it moves (its "Claims: " line)
+  std::string unlinked;             // "Claims: none (why)": why no claim links it (nothing measured moves one)
 };
 
 const std::vector<KnownDeviation>& known_deviations();
 
 // The causes of a deviations.md text: each "## " heading a topic, the lines below it the text
 // (joined by spaces), the line "Moves: ..." what it moves, then the line "Claims: a; b" the claim
-// keys it moves. Throws std::runtime_error naming the line when a cause has no Moves: or Claims:
+// keys it moves, or "Claims: none (why)" where no shipped probe measures how much of a claim's gap
+// it closes (no claim links it; `unlinked` keeps why). Throws std::runtime_error naming the line when a cause has no Moves: or Claims:
 // line, or text follows them.
 std::vector<KnownDeviation> parse_known_deviations(const std::string& markdown);
 

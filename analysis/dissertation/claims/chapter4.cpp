@@ -2,6 +2,7 @@
 // criterion (claims/support.hpp).
 #include "analysis/dissertation/claims/registry.hpp"
 #include "analysis/dissertation/document_links.hpp"
+#include "analysis/fit/exponential_fits.hpp"
 #include "analysis/dissertation/claims/support.hpp"
 
 namespace capsule::analysis::claims {
@@ -444,6 +445,153 @@ ClaimResult claim_4_2_C_steady(const DissertationResults& res) {
 }
 
 // This file's claims under their keys in claims.md, each with its rows (claims/registry.hpp).
+// Sec. 4.1.1 (Figs. 21-22): "Nor does tank-treading occur within this interval; the position of the
+// capsule node denoted in Figure 22 is nearly identical at A and B. In contrast, the major curvature
+// changes necessary to return to biconcavity occur almost entirely between B and C." Fig. 21's capsule
+// (Ca 0.067, E_b 0.0014, V 1, eta 6): its tracked element's phase distance at the stop (A), at the
+// minimum of D_xy (B) and at the end of the recovery (C).
+ClaimResult claim_4_1_1_fig22(const DissertationResults& res) {
+  constexpr double bound = 0.2;  // "nearly" of "3.2 constant"
+  auto [r, c] = open_claim(res, "4.1.1 Fig. 22", {{"bound", num(bound)}});
+  if (!c) return r;
+  for (const DissertationMember* m : c->in_case("eta")) {
+    if (parameter(*m, "eta") != 6.0) continue;
+    std::string why;
+    const auto data = res.member_data(*m, why);
+    if (!data) {
+      r.measured = "cannot tell (members missing): " + why;
+      return r;
+    }
+    const auto kt_it = data->series.find("kt");
+    const double t_stop = marker(*data, "t_stop"), t_min = marker(*data, "t_min");
+    if (kt_it == data->series.end() || data->beta.size() != kt_it->second.size() || data->beta.empty() ||
+        data->beta.front().empty() || !std::isfinite(t_stop) || !std::isfinite(t_min)) {
+      r.measured = "cannot tell (members missing): " + m->slug + ": no phase angles (/series/beta) or no t_stop / t_min";
+      return r;
+    }
+    const auto& kt = kt_it->second;
+    const auto at = [&](double t) {
+      std::size_t i = 0;
+      while (i + 1 < kt.size() && kt[i] < t) ++i;
+      return phase_distance(data->beta[i].front());
+    };
+    const double A = at(t_stop), B = at(t_min), C = phase_distance(data->beta.back().front());
+    const double share = std::abs(A - B) / std::abs(A - C);
+    set(r, share <= bound,
+        m->slug + ": phase distance of the tracked element " + num(A) + " at A (kt " + num(t_stop) + "), " + num(B) + " at B (kt " +
+            num(t_min) + "), " + num(C) + " at C (kt " + num(kt.back()) + "): A to B is " + num(share) + " of A to C");
+    return r;
+  }
+  r.measured = "cannot tell (members missing): no case eta member at eta 6 (Fig. 21's capsule)";
+  return r;
+}
+
+// Sec. 4.1.1: "For a two dimensional simulation, the dependence of the recovery on the phase angle is due
+// to membrane elements having a preferred curvature; consequently, a given element of the capsule returns
+// to the same (or opposite, homologous) position it held prior to the deformation"; Sec. 4.3: "In two
+// dimensions, the explicit curvature preference of bending stiffness drives capsule elements to their
+// original positions via tank-treading."
+ClaimResult claim_4_1_1_memory(const DissertationResults& res) {
+  auto [r, c] = open_claim(res, "4.1.1 memory");
+  if (!c) return r;
+  Parts parts;
+  std::size_t with_bending = 0, without = 0;
+  for (const DissertationMember* m : c->in_case("")) {
+    const Recovery3d x = recovery_3d(res, *m);
+    if (!x.ok) {
+      part_missing(parts.why, x.why);
+      continue;
+    }
+    const bool bending = x.E_b > 0.0;
+    (bending ? with_bending : without) += 1;
+    parts.add(bending ? x.memory() : x.no_memory(),
+              m->slug + " (E_b " + num(x.E_b) + "): phase distance " + num(x.phase_stop) + " -> " + num(x.phase_end) + " rad");
+  }
+  if (with_bending == 0 || without == 0)
+    part_missing(parts.why, "members with E_b > 0: " + std::to_string(with_bending) + ", with E_b = 0: " + std::to_string(without) + ", need 1 each");
+  return parts.finish(r);
+}
+
+// Sec. 4.2 (Fig. 43), case A: "During the recovery process depicted, each phase angle decreases by
+// approximately 40 - 70%". Each tracked element's phase distance from its rest position (beta modulo
+// pi), from the stop to the end of the recovery.
+ClaimResult claim_4_2_A_phase_fall(const DissertationResults& res) {
+  constexpr double lo = 0.3, hi = 0.8;  // 40-70 % ten points either way, as "4.1.2 Fig. 38 bending" reads "nearly 50 %"
+  auto [r, c] = open_claim(res, "4.2 A phase fall", {{"lo", num(100 * lo)}, {"hi", num(100 * hi)}});
+  if (!c) return r;
+  set_text(r, 0.4 >= lo && 0.7 <= hi, "the text's 40-70 % lies within [" + num(100 * lo) + ", " + num(100 * hi) + "] %");
+  Parts parts;
+  for (const DissertationMember* m : c->in_case("A_c0_-2.09")) {
+    std::string why;
+    const auto data = res.member_data(*m, why, true);
+    const double t_stop = data ? marker(*data, "t_stop") : k_nan;
+    if (!data || !data->series.count("kt") || data->beta.size() != data->series.at("kt").size() || data->beta.empty() ||
+        data->beta.front().empty() || !std::isfinite(t_stop)) {
+      part_missing(parts.why, data ? m->slug + ": no phase angles (/series/beta) or no t_stop" : why);
+      continue;
+    }
+    const auto& kt = data->series.at("kt");
+    std::size_t i_stop = 0;
+    while (i_stop + 1 < kt.size() && kt[i_stop] < t_stop) ++i_stop;
+    bool all = true;
+    std::string falls;
+    for (std::size_t e = 0; e < data->beta[i_stop].size() && e < data->beta.back().size(); ++e) {
+      const double d0 = phase_distance(data->beta[i_stop][e]), d1 = phase_distance(data->beta.back()[e]);
+      const double fall = d0 > 0.0 ? (d0 - d1) / d0 : k_nan;
+      all = all && fall >= lo && fall <= hi;
+      append_listed(falls, num(100 * fall) + " %");
+    }
+    parts.add(all, m->slug + ": falls of the tracked elements' phase distances " + falls);
+  }
+  if (parts.text.empty() && parts.why.empty()) part_missing(parts.why, "no case A_c0_-2.09 member");
+  return parts.finish(r);
+}
+
+// Sec. 4.1.2: "when attempting to describe this recovery by fitting an exponential curve to D_xy, it was
+// found that a single exponential decay function failed to adequately describe this recovery." Each
+// tumbling member (stopped at theta = -pi/3) fitted from the stop by one exponential toward its rest
+// D_xy, D = D_inf + (D_stop - D_inf) exp(-t / k tau) ((88) started at the stop).
+ClaimResult claim_4_1_2_single(const DissertationResults& res) {
+  constexpr double adequate = 0.97;  // the R^2 the text accepts for its (90) fits ("4.1.2 R2")
+  auto [r, c] = open_claim(res, "4.1.2 single exponential", {{"adequate", num(adequate)}});
+  if (!c) return r;
+  Parts parts;
+  std::vector<std::string> gaps;
+  std::size_t judged = 0, adequate_fits = 0;
+  double highest = -std::numeric_limits<double>::infinity();
+  std::string adequate_list;
+  for (const DissertationMember* m : c->in_case("")) {
+    if (const std::string outside = outside_tumbling_ensemble(res, *m); !outside.empty()) {
+      gaps.push_back(m->slug + ": " + outside);
+      continue;
+    }
+    std::string why;
+    const auto data = res.member_data(*m, why);
+    const double t_stop = data ? marker(*data, "t_stop") : k_nan, t_end = data ? marker(*data, "t_end") : k_nan,
+                 D_inf = data ? marker(*data, "D_inf") : k_nan;
+    if (!data || !data->series.count("kt") || !data->series.count("D_xy") || !std::isfinite(t_stop) || !std::isfinite(t_end) ||
+        !std::isfinite(D_inf)) {
+      part_missing(parts.why, data ? m->slug + ": no kt / D_xy series or no t_stop / t_end / D_inf" : why);
+      continue;
+    }
+    const auto& kt = data->series.at("kt");
+    const auto& D = data->series.at("D_xy");
+    const FitResult f = fit_two_phase_late(kt, D, interpolate_series(kt, D, t_stop), D_inf, t_stop, t_end);
+    ++judged;
+    const double r2 = f.ok ? f.r_squared : k_nan;
+    if (f.ok) highest = std::max(highest, r2);
+    if (f.ok && r2 > adequate) {
+      ++adequate_fits;
+      append_listed(adequate_list, m->slug + " R^2 " + num(r2));
+    }
+  }
+  if (judged == 0 && parts.why.empty()) part_missing(parts.why, "no tumbling member stopped at theta = -pi/3");
+  parts.add(adequate_fits == 0, std::to_string(judged) + " recoveries fitted by one exponential, " + std::to_string(adequate_fits) +
+                                    " with R^2 above " + num(adequate) + (adequate_list.empty() ? "" : " (" + adequate_list + ")") +
+                                    "; highest R^2 " + num(highest) + (gaps.empty() ? "" : "; not counted: " + first_gaps(gaps)));
+  return parts.finish(r);
+}
+
 ClaimList chapter4_claims() {
   return {{"4.1.1 orders",
            {[](const DissertationResults& res) {
@@ -456,14 +604,18 @@ ClaimList chapter4_claims() {
           once("4.1.1 R1", claim_4_1_1_R1),
           once("4.1.1 R2", claim_4_1_1_R2),
           once("4.1.1 no bending", claim_4_1_1_no_bending),
+          once("4.1.1 Fig. 22", claim_4_1_1_fig22),
+          once("4.1.1 memory", claim_4_1_1_memory),
           once("4.1.1 dip and rise", claim_4_1_1_dip_rise),
           once("4.1.1 worst fits", claim_4_1_1_worst_fits),
           once("4.1.2 direction", claim_4_1_2_direction),
+          once("4.1.2 single exponential", claim_4_1_2_single),
           once("4.1.2 R2", claim_4_1_2_r2),
           once("4.2 A", claim_4_2_A),
           once("4.2 B", claim_4_2_B),
           once("4.2 C", claim_4_2_C),
           once("4.2 A plateau", claim_4_2_A_plateau),
+          once("4.2 A phase fall", claim_4_2_A_phase_fall),
           once("4.2 c0", claim_4_2_c0),
           once("4.2 C steady", claim_4_2_C_steady)};
 }

@@ -172,3 +172,112 @@ TEST_CASE("Dissertation claims: in oscillatory shear the three models deform ali
   const auto apart = write(0.1, 1.0);  // a third of the others' first peak
   CHECK(find_claim(apart, "5.2.2", "initial deformation agrees very well").verdict == Verdict::differs);
 }
+
+namespace {
+
+// A recovering 2D member stopped at kt 10 whose D_xy is least at kt 12 (t_min): its mean tension and bending
+// moment are `tension` and `bending` (kt -> value) between the stop and kt 30, linear between the points given.
+void write_recovery_series(const std::filesystem::path& file, const nlohmann::json& scene, const std::vector<std::pair<double, double>>& tension,
+                           const std::vector<std::pair<double, double>>& bending) {
+  std::filesystem::create_directories(file.parent_path());
+  capsule::io::MemberWriter w(file.string());
+  w.set_scene(scene);
+  const auto at = [](const std::vector<std::pair<double, double>>& p, double t) {
+    if (t <= p.front().first) return p.front().second;
+    for (std::size_t i = 1; i < p.size(); ++i)
+      if (t <= p[i].first) return p[i - 1].second + (p[i].second - p[i - 1].second) * (t - p[i - 1].first) / (p[i].first - p[i - 1].first);
+    return p.back().second;
+  };
+  for (int i = 0; i <= 600; ++i) {
+    const double t = 0.05 * i;
+    w.append({{"kt", t}, {"D_xy", t <= 10.0 ? 0.7 : 0.75}, {"theta", 0.2}, {"shear_on", t <= 10.0 ? 1.0 : 0.0},
+              {"tension", at(tension, t)}, {"bending_moment", at(bending, t)}});
+  }
+  w.set_markers({{"t_max", k_nan}, {"D_max", k_nan}, {"t_stop", 10.0}, {"D_stop", 0.7}, {"t_min", 12.0}, {"D_min", 0.6},
+                 {"t_end", 30.0}, {"D_inf", 0.8}});
+  w.finish("complete");
+}
+
+}  // namespace
+
+TEST_CASE("Dissertation claims: Fig. 37's tension falls sharply in the first phase and its bending moment mostly in the second", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_fig37");
+  const std::string rel = "members/eta12/member.h5";
+  const auto write = [&](const std::vector<std::pair<double, double>>& tension, const std::vector<std::pair<double, double>>& bending) {
+    write_recovery_series(tmp.path / "ch4_2d_tt" / rel, {{"dim", 2}, {"Ca", 0.067}, {"E_b", 0.0014}, {"V", 1.0}, {"eta", 12.0}}, tension, bending);
+    write_fits(tmp.path, "ch4_2d_tt",
+               nlohmann::json::array({member_json("eta-eta12", "eta", {{"Ca", 0.067}, {"E_b", 0.0014}, {"V", 1.0}, {"eta", 12.0}}, {}, rel)}));
+    return judge(tmp);
+  };
+  {
+    // Tension 0.07 -> -0.01 (compression, |0.01|) by t_min, -> -0.001 by the end; m 0.006 -> 0.0055 -> 0.0005.
+    const auto c = write({{10.0, 0.07}, {12.0, -0.01}, {30.0, -0.001}}, {{10.0, 0.006}, {12.0, 0.0055}, {30.0, 0.0005}});
+    const ClaimResult& t = find_claim(c, "4.1.2", "tension falls sharply while D_xy decreases");
+    INFO(t.measured);
+    CHECK(t.verdict == Verdict::agrees);
+    const ClaimResult& m = find_claim(c, "4.1.2", "bending moment decreases at a modest rate");
+    INFO(m.measured);
+    CHECK(m.verdict == Verdict::agrees);
+    CHECK(m.measured.find("9.09 % of its fall in the first phase") != std::string::npos);
+  }
+  {
+    // Tension only halves by t_min... to 0.04 (more than half left); m falls mostly before t_min.
+    const auto c = write({{10.0, 0.07}, {12.0, 0.04}, {30.0, 0.001}}, {{10.0, 0.006}, {12.0, 0.001}, {30.0, 0.0005}});
+    CHECK(find_claim(c, "4.1.2", "tension falls sharply while D_xy decreases").verdict == Verdict::differs);
+    CHECK(find_claim(c, "4.1.2", "bending moment decreases at a modest rate").verdict == Verdict::differs);
+  }
+  write_fits(tmp.path, "ch4_2d_tt",
+             nlohmann::json::array({member_json("eta-eta6", "eta", {{"Ca", 0.067}, {"E_b", 0.0014}, {"V", 1.0}, {"eta", 6.0}}, {}, rel)}));
+  CHECK(find_claim(judge(tmp), "4.1.2", "tension falls sharply while D_xy decreases").verdict == Verdict::cannot_tell);
+  CHECK(find_claim(judge(tmp), "4.1.2", "bending moment decreases at a modest rate").verdict == Verdict::cannot_tell);
+}
+
+TEST_CASE("Dissertation claims: Fig. 38's tension falls sharply in the first kt after the stop, then slowly", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_fig38_tension");
+  const std::string rel = "members/base/member.h5";
+  const nlohmann::json scene{{"dim", 2}, {"Ca", 0.4}, {"E_b", 0.05}, {"V", 5.0}, {"eta", 0.0}, {"shape", "biconcave"},
+                             {"protocol", {{"shear", {{"until", "theta"}, {"value", -M_PI / 3}, {"max_kt", 50.0}}},
+                                           {"recover", {{"until", "time"}, {"kt", 20.0}}}}}};
+  const auto write = [&](double at_1) {
+    write_recovery_series(tmp.path / "ch4_2d_tumble" / rel, scene, {{10.0, 0.05}, {11.0, at_1}, {30.0, 0.001}}, {{10.0, 0.08}, {30.0, 0.01}});
+    write_fits(tmp.path, "ch4_2d_tumble",
+               nlohmann::json::array({member_json("Ca-Ca0.4", "Ca", {{"Ca", 0.4}, {"E_b", 0.05}, {"V", 5.0}, {"eta", 0.0}}, {}, rel)}));
+    return find_claim(judge(tmp), "4.1.2", "tension falls sharply until about kt 1");
+  };
+  const ClaimResult sharp = write(0.01);
+  INFO(sharp.measured);
+  CHECK(sharp.verdict == Verdict::agrees);
+  CHECK(write(-0.06).verdict == Verdict::differs);  // compressed more than it was stretched
+  write_fits(tmp.path, "ch4_2d_tumble", nlohmann::json::array());
+  CHECK(find_claim(judge(tmp), "4.1.2", "tension falls sharply until about kt 1").verdict == Verdict::cannot_tell);
+}
+
+TEST_CASE("Dissertation claims: 4.2 A phase fall, every tracked element's phase distance falls by 30-80 %", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_phase_fall");
+  const std::string rel = "members/A/member.h5";
+  const auto write = [&](double end_of_second) {
+    const auto file = tmp.path / "ch4_3d_cases" / rel;
+    std::filesystem::create_directories(file.parent_path());
+    {
+      capsule::io::MemberWriter w(file.string());
+      w.set_scene({{"dim", 3}, {"Ca", 0.5}, {"E_b", 0.05}, {"V", 2.0}, {"shape", "biconcave"}});
+      for (int i = 0; i <= 65; ++i) {
+        const double t = i, s = t <= 15.0 ? 0.0 : (t - 15.0) / 50.0;
+        w.append({{"kt", t}, {"D_xy", 0.55}, {"theta", 0.2}, {"shear_on", t <= 15.0 ? 1.0 : 0.0}},
+                 {0.4 + (0.2 - 0.4) * s, 1.0 + (end_of_second - 1.0) * s});
+      }
+      w.set_markers({{"t_max", k_nan}, {"D_max", k_nan}, {"t_stop", 15.0}, {"D_stop", 0.55}, {"t_min", k_nan}, {"D_min", k_nan},
+                     {"t_end", 65.0}, {"D_inf", k_nan}});
+      w.finish("complete");
+    }
+    write_fits(tmp.path, "ch4_3d_cases", nlohmann::json::array({member_json("A", "A_c0_-2.09", {{"E_b", 0.05}, {"c0", -2.09}}, {}, rel)}));
+    return find_claim(judge(tmp), "4.2", "each tracked element's phase angle decreases");
+  };
+  const ClaimResult within = write(0.45);  // falls of 50 % and 55 %
+  INFO(within.measured);
+  CHECK(within.verdict == Verdict::agrees);
+  CHECK(within.text_passes == TextPasses::yes);
+  CHECK(write(0.05).verdict == Verdict::differs);  // the second element falls by 95 %
+  write_fits(tmp.path, "ch4_3d_cases", nlohmann::json::array());
+  CHECK(find_claim(judge(tmp), "4.2", "each tracked element's phase angle decreases").verdict == Verdict::cannot_tell);
+}

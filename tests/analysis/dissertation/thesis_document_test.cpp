@@ -178,9 +178,18 @@ TEST_CASE("Thesis document: the bottom line's counts are the verdicts' counts", 
   CHECK(t.summary.claims_differ == count[ClaimVerdict::differs]);
   CHECK(t.summary.claims_in_part == count[ClaimVerdict::in_part]);
   CHECK(t.summary.claims_cannot_tell == count[ClaimVerdict::cannot_tell]);
-  // each claim that cannot be told is named in it
+  // each claim that cannot be told is named in it (a long line is wrapped, possibly inside a link's text)
+  std::string flat;
+  for (std::size_t i = 0; i < bottom.size(); ++i) {
+    if (bottom[i] != '\n') {
+      flat += bottom[i];
+      continue;
+    }
+    while (i + 1 < bottom.size() && bottom[i + 1] == ' ') ++i;
+    flat += ' ';
+  }
   for (const auto& [key, v] : verdicts)
-    if (v == ClaimVerdict::cannot_tell) CHECK(bottom.find("[" + key + "](#" + claim_anchor(key) + ")") != std::string::npos);
+    if (v == ClaimVerdict::cannot_tell) CHECK(flat.find("[" + key + "](#" + claim_anchor(key) + ")") != std::string::npos);
 }
 
 TEST_CASE("Thesis document: figures.md and the causes' Claims: lines name claims and shipped files that exist", "[analysis][dissertation]") {
@@ -211,7 +220,7 @@ TEST_CASE("Thesis document: figures.md and the causes' Claims: lines name claims
   }
   for (const auto& d : known_deviations()) {
     INFO(d.topic);
-    CHECK_FALSE(d.claims.empty());
+    CHECK(d.claims.empty() != d.unlinked.empty());  // linked from claims, or "Claims: none (why)"
     for (const auto& key : d.claims) CHECK(keys.count(key) == 1);
   }
 }
