@@ -11,6 +11,7 @@
 #include "study/report/report_freshness.hpp"
 
 #include "analysis/compare/campaign_compare.hpp"
+#include "analysis/dissertation/figure_axes.hpp"
 #include "analysis/dissertation/table2_compare.hpp"
 #include "analysis/report/report.hpp"
 #include "analysis/dissertation/report.hpp"
@@ -51,6 +52,7 @@ int report_campaign(const CampaignSurvey& survey, const ReportOptions& options, 
   request.campaign_file = survey.campaign.source;
   request.out_dir = staging.string();
   request.analysis = survey.campaign.analysis;
+  request.text_figures = analysis::text_figures_of_campaign(survey.campaign.name);  // titles "Fig. N: ..."
   std::vector<std::string> not_run;     // "member: state", members without a final file yet
   std::vector<std::string> unreadable;  // "member: reason"
   for (std::size_t i = 0; i < survey.members.size(); ++i) {
