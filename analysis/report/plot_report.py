@@ -198,7 +198,21 @@ def draw_times(decl):
     tops = {(n, a): 0.0 for n in names for a in ("left", "right")}
     several = len(decl["series"]) > 1
     quantity_colors = {}
+    # A resolution ladder's levels of one case share its colour; the finest level is filled,
+    # coarser levels open.
+    level = re.compile(r"(, )?\ba = ([0-9.]+)")
+    bases, finest = [], {}
+    for s in decl["series"]:
+        base = level.sub("", s["label"]).replace("()", "").strip()
+        m = level.search(s["label"])
+        if base not in bases:
+            bases.append(base)
+        if m:
+            finest[base] = max(finest.get(base, 0.0), float(m.group(2)))
     for i, s in enumerate(decl["series"]):
+        base = level.sub("", s["label"]).replace("()", "").strip()
+        m = level.search(s["label"])
+        coarse = bool(m) and float(m.group(2)) < finest.get(base, 0.0)
         for c in s["columns"]:
             d = t["cases"][s["label"]]["columns"][c["column"]]
             panel = c.get("panel", "main")
@@ -206,7 +220,7 @@ def draw_times(decl):
             marker, ls = QUANTITY_STYLE.get(c["quantity"], ("o", "-"))
             free = c["fit"].endswith("_free")
             if several:
-                color = "C%d" % (i % 10)
+                color = "C%d" % (bases.index(base) % 10)
             else:
                 color = quantity_colors.setdefault(c["quantity"], "C%d" % (len(quantity_colors) % 10))
             lo = [max(0.0, y - l) for y, l in zip(d["y"], d["lo"])]
@@ -217,9 +231,9 @@ def draw_times(decl):
             if c["axis"] == "right":
                 label += ", right axis"
             if several:
-                label += ": case " + s["label"]
+                label += ": " + ("" if s["label"].startswith("(") else "case ") + s["label"]
             target.errorbar(d["x"], d["y"], yerr=[lo, hi], marker=marker, ls=ls, color=color, capsize=2, ms=5,
-                            mfc="none" if free else color, label=label)
+                            mfc="none" if free or coarse else color, alpha=0.6 if coarse else 1.0, label=label)
             tops[(panel, c["axis"])] = max([tops[(panel, c["axis"])]] + d["hi"] + d["y"])
     axes[-1].set_xlabel(words(decl["x"]))
     handles, labels = [], []
@@ -248,6 +262,8 @@ def draw_times(decl):
     axes[0].set_title(title_of(decl, fallback[0].upper() + fallback[1:]), fontsize=9)
     legend_outside(axes[0], handles, labels, right_axis=bool(decl["right"]))
     caption = "Points: fitted values with 95 % intervals (Student's t)."
+    if finest:
+        caption += " Levels of a resolution ladder (a = radius in lattice units): finest filled, coarser open."
     if "free-amplitude fit" in names:
         caption += " Middle: the same times from the double exponential with free amplitudes (open markers)."
     if "fraction" in names:
