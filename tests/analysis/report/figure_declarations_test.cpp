@@ -63,7 +63,7 @@ TEST_CASE("Figure declarations: tumbling times on the text's two axes, w_R1 in i
   CHECK((*d)["series"][0]["label"] == "Ca");
 }
 
-TEST_CASE("Figure declarations: with no series sweeping x every series is drawn; normalised names", "[analysis][figures]") {
+TEST_CASE("Figure declarations: with no series sweeping x every series is drawn, and normalised names", "[analysis][figures]") {
   json data{{"tables", json::array()}};
   json one{{"recovery.k_tau_r", series({0.5})}, {"response.k_tau_s", series({0.5})}};
   data["tables"].push_back({{"name", "by_case"}, {"x", "E_b"}, {"normalise", "tau_e"},
