@@ -12,10 +12,7 @@ namespace capsule::analysis {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-// The cells of a Markdown table row "| a | b |" (blanks trimmed).
-std::vector<std::string> row_cells(const std::string& line) {
+std::vector<std::string> markdown_row_cells(const std::string& line) {
   std::vector<std::string> cells;
   std::size_t at = 1;
   while (true) {
@@ -29,6 +26,8 @@ std::vector<std::string> row_cells(const std::string& line) {
   }
   return cells;
 }
+
+namespace {
 
 bool shipped(const std::string& results_dir, const std::string& file) {
   std::error_code ec;
@@ -48,7 +47,7 @@ std::vector<TextFigure> parse_figure_index(const std::string& markdown) {
     if (line.rfind("|", 0) != 0) continue;
     if (!header_seen) { header_seen = true; continue; }
     if (!separator_seen) { separator_seen = true; continue; }
-    const auto cells = row_cells(line);
+    const auto cells = markdown_row_cells(line);
     const std::string where = "analysis/dissertation/figures.md line " + std::to_string(line_number) + ": ";
     if (cells.size() != 4) throw std::runtime_error(where + "expected 4 cells, found " + std::to_string(cells.size()));
     if (cells[0].empty()) throw std::runtime_error(where + "a row without a figure number");

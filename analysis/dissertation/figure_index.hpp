@@ -15,6 +15,9 @@ struct TextFigure {
   std::vector<std::string> claims;   // keys of claims.md it illustrates
 };
 
+// The cells of a Markdown table row "| a | b |", blanks around each trimmed.
+std::vector<std::string> markdown_row_cells(const std::string& line);
+
 // The rows of a figures.md text: every table row below the header and its |---| line, four
 // cells (figure, shows, files, claims; lists separated by ';'). Throws std::runtime_error naming
 // the line for a row with another number of cells or without a figure number.

@@ -10,6 +10,8 @@
 #include "analysis/dissertation/chapter_tables.hpp"
 #include "analysis/dissertation/claim_details.hpp"
 #include "analysis/dissertation/deviations.hpp"
+#include "analysis/dissertation/document_links.hpp"
+#include "analysis/dissertation/figure_axes.hpp"
 #include "analysis/dissertation/figure_index.hpp"
 #include "analysis/dissertation/validation.hpp"
 
@@ -25,6 +27,16 @@ const std::vector<std::string>& dissertation_campaigns() {
 }
 
 namespace {
+
+// Which figures the reports draw as the text does, several members on one plot.
+std::string overlaid_figures_sentence() {
+  std::string together;
+  for (const auto& a : figure_axes())
+    if (!a.together.empty()) append_listed(together, a.number);
+  if (together.empty()) return "The toolkit draws one panel per member where the text overlays several.";
+  return "Where the text overlays several members, the toolkit does too for Figs. " + together +
+         " (fig<N>.png) and draws one panel per member for the others.";
+}
 
 Table campaign_table(const DissertationResults& results) {
   Table t;
@@ -131,8 +143,8 @@ std::string figures_section_markdown(const DissertationResults& results, const D
   md += "## Figures\n\n";
   md += "The dissertation's figures that a shipped campaign's report regenerates with the same axes and quantities "
         "(" + std::to_string(s.linked_figures) + " toolkit figures linked; the table is "
-        "analysis/dissertation/figures.md). The toolkit draws one panel per member where the text overlays "
-        "several.\n\n";
+        "analysis/dissertation/figures.md; each figure's axes, those of the text's caption, are in "
+        "analysis/dissertation/figure_axes.md). " + overlaid_figures_sentence() + "\n\n";
   md += figures_markdown(results.results_dir(), link_base) + "\n";
   return md;
 }

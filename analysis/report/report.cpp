@@ -6,6 +6,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "analysis/report/figure_declarations.hpp"
 #include "analysis/report/plot_script.hpp"
 #include "analysis/report/report_section.hpp"
 
@@ -94,6 +95,7 @@ ReportSummary write_report(const ReportRequest& request) {
     summary.figures_skipped = true;
     summary.figures_note = request.no_figures;
   } else {
+    declare_figures(outputs.figure_data, request.text_figures);
     draw_figures(out, outputs.figure_data, outputs, summary);
   }
   summary.files = std::move(outputs.files);

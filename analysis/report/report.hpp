@@ -22,6 +22,10 @@ struct ReportRequest {
   nlohmann::json analysis;     // the campaign's "analysis" block (null: defaults)
   std::vector<MemberRef> members;
   std::string no_figures;      // non-empty: draw no figures, and this says why
+  // The dissertation's figures this report's figures stand for: [{"file": "tt_times_vs_Ca.png",
+  // "number": "25", "shows": "..."}, ...]; an entry with "together": [{"label": "power law", "members": [slugs]}, ...] is a
+  // figure of its own drawing those members on one plot, a line style per group (figure_declarations.hpp).
+  nlohmann::json text_figures = nlohmann::json::array();
 };
 
 struct ReportSummary {

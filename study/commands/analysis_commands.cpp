@@ -12,6 +12,7 @@
 #include "study/slurm/slurm_queue.hpp"
 
 #include "analysis/compare/campaign_compare.hpp"
+#include "analysis/dissertation/figure_axes.hpp"
 #include "analysis/dissertation/table2_compare.hpp"
 #include "analysis/report/report.hpp"
 #include "analysis/dissertation/report.hpp"
@@ -120,6 +121,7 @@ int report_campaign(const CampaignSurvey& survey, const ReportOptions& options, 
   request.campaign_file = survey.campaign.source;
   request.out_dir = staging.string();
   request.analysis = survey.campaign.analysis;
+  request.text_figures = analysis::text_figures_of_campaign(survey.campaign.name);  // titles "Fig. N: ..."
   ReportMembers members = report_members(survey, out);
   request.members = members.refs;
   std::vector<std::string>& unreadable = members.unreadable;

@@ -51,6 +51,9 @@ nlohmann::json member_figure(const MemberAnalysis& m) {
   mj["title"] = case_label(m.ref.case_name) + " / " + m.ref.slug + " (" + m.status + ")";
   if (m.gamma_min.size() == m.kt.size() && m.gamma_max.size() == m.kt.size() && !m.gamma_min.empty())
     mj["gamma"] = {{"min", m.gamma_min}, {"max", m.gamma_max}};
+  mj["parameters"] = nlohmann::json::object();  // a figure drawing several members names them by these
+  for (const auto& [k, v] : m.parameters)
+    if (std::isfinite(v)) mj["parameters"][k] = v;
   mj["markers"] = nlohmann::json::object();
   for (const auto& [k, v] : m.markers)
     if (std::isfinite(v)) mj["markers"][k] = v;
@@ -64,8 +67,13 @@ nlohmann::json member_figure(const MemberAnalysis& m) {
         d.push_back(evaluate_fit(f, x));
       }
     std::string label = f.model;
-    for (const auto& p : f.parameters) label += ", " + p.name + " = " + format_number(p.value);
-    mj["curves"].push_back({{"label", label}, {"kt", t}, {"D", d}});
+    nlohmann::json parameters = nlohmann::json::array();  // the figure prints each with its 95 % interval
+    for (const auto& p : f.parameters) {
+      label += ", " + p.name + " = " + format_number(p.value);
+      parameters.push_back({{"name", p.name}, {"value", json_number(p.value)}, {"ci_low", json_number(p.ci_low)},
+                            {"ci_high", json_number(p.ci_high)}});
+    }
+    mj["curves"].push_back({{"label", label}, {"model", f.model}, {"parameters", parameters}, {"kt", t}, {"D", d}});
   }
   return mj;
 }

@@ -44,7 +44,7 @@ struct TableSeries {  // for the figure of a table
   std::vector<double> x, y, lo, hi;
 };
 
-Table time_table(const TableSpec& spec, const std::vector<MemberAnalysis>& members,
+Table time_table(const TableSpec& spec, const std::vector<MemberAnalysis>& members, const std::set<std::string>& ladder_keys,
                  std::map<std::string, std::map<std::string, TableSeries>>& series) {
   Table t;
   const std::string unit = spec.normalise == "tau_e"     ? "tau / tau_e = k tau / (Ca V)"
@@ -59,9 +59,12 @@ Table time_table(const TableSpec& spec, const std::vector<MemberAnalysis>& membe
     t.header.push_back(c + " R2");
   }
   // Figure lines: one per case and per value of any other standard parameter that
-  // varies within the case (e.g. V on an (eta, V) grid), so no line joins unlike members.
+  // varies within the case (e.g. V on an (eta, V) grid) and per level of a resolution ladder
+  // (a = 5 and a = 7 are separate markers), so no line joins unlike members.
+  std::set<std::string> splitting{"Ca", "E_b", "V", "eta"};
+  splitting.insert(ladder_keys.begin(), ladder_keys.end());
   std::map<std::string, std::set<std::string>> varying;  // case -> parameter names
-  for (const std::string name : {"Ca", "E_b", "V", "eta"}) {
+  for (const std::string& name : splitting) {
     if (name == spec.x) continue;
     std::map<std::string, std::set<double>> values;
     for (const auto& m : members) values[m.ref.case_name].insert(parameter(m, name));
@@ -72,7 +75,7 @@ Table time_table(const TableSpec& spec, const std::vector<MemberAnalysis>& membe
     std::string label = m.ref.case_name;
     std::string extra;
     for (const auto& name : varying[m.ref.case_name])
-      extra += (extra.empty() ? "" : ", ") + name + " = " + format_number(parameter(m, name));
+      extra += (extra.empty() ? "" : ", ") + name.substr(name.rfind('.') + 1) + " = " + format_number(parameter(m, name));
     if (!extra.empty()) {
       if (!label.empty()) label += ' ';
       label += '(';
@@ -115,12 +118,15 @@ class TimeTablesSection : public ReportSection {
   void write(const ReportContext& context, const fs::path& out_dir, ReportOutputs& outputs) const override {
     outputs.figure_data["tables"] = nlohmann::json::array();
     outputs.fits["tables"] = nlohmann::json::array();
+    std::set<std::string> ladder_keys;
+    for (const auto& l : context.block.ladders) ladder_keys.insert(l.key);
+    if (context.block.bilinear && !context.block.bilinear->ladder.empty()) ladder_keys.insert(context.block.bilinear->ladder);
     for (const auto& spec : context.block.tables) {
       std::map<std::string, std::map<std::string, TableSeries>> series;
-      outputs.write_table(time_table(spec, context.members, series), out_dir / "tables", spec.name);
+      outputs.write_table(time_table(spec, context.members, ladder_keys, series), out_dir / "tables", spec.name);
       outputs.fits["tables"].push_back(
           {{"name", spec.name}, {"x", spec.x}, {"columns", spec.columns}, {"normalise", spec.normalise}});
-      nlohmann::json ft{{"name", spec.name}, {"x", spec.x}};
+      nlohmann::json ft{{"name", spec.name}, {"x", spec.x}, {"normalise", spec.normalise}};
       ft["ylabel"] = spec.normalise == "tau_e"     ? "$\\tau/\\tau_e$"
                      : spec.normalise == "tau_v"   ? "$\\tau/\\tau_v$"
                      : spec.normalise == "seconds" ? "$\\tau$ (s)"
