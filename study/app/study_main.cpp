@@ -7,6 +7,7 @@
 
 #include "solver/app/cli_support.hpp"
 #include "solver/io/member_file.hpp"
+#include "solver/scene/json_text.hpp"
 #include "solver/scene/scene.hpp"
 #include "solver/scene/version.hpp"
 #include "study/report/analysis_commands.hpp"
@@ -168,10 +169,10 @@ int main_body(int argc, char** argv) {
       ->check(count);
   exporter->add_option("--time", slurm_options.time,
                        "Slurm --time per task (default: from the cost estimate of the largest member)")
-      ->check(slurm_form(is_slurm_time, "minutes, H:MM:SS, D-HH[:MM[:SS]]"));
+      ->check(slurm_form(is_slurm_time, "minutes, H:MM:SS, D-HH[:MM[:SS]], at most 8 digits a number"));
   exporter->add_option("--mem", slurm_options.mem,
                        "Slurm --mem per task (default: from the lattice size of the largest member)")
-      ->check(slurm_form(is_slurm_mem, "megabytes, or a number with K, M, G or T"));
+      ->check(slurm_form(is_slurm_mem, "megabytes, or a number with K, M, G or T, at most 12 digits"));
   exporter->add_flag("--rerun-unstable", slurm_options.rerun_unstable, "include members that ended unstable");
   exporter->add_flag("--allow-dirty", slurm_options.allow_dirty,
                      "export even when this build's sources differ from every commit");
@@ -278,22 +279,22 @@ int main(int argc, char** argv) {
   try {
     return main_body(argc, argv);
   } catch (const CampaignError& e) {
-    std::cerr << "study: " << e.what() << "\n";
+    std::cerr << "study: " << capsule::terminal_text(e.what()) << "\n";
     return exit_usage;
   } catch (const capsule::SceneError& e) {
-    std::cerr << "study: " << e.what() << "\n";
+    std::cerr << "study: " << capsule::terminal_text(e.what()) << "\n";
     return exit_usage;
   } catch (const UnsafePathError& e) {
-    std::cerr << "study: " << e.what() << "\n";
+    std::cerr << "study: " << capsule::terminal_text(e.what()) << "\n";
     return exit_usage;
   } catch (const DirtyBuild& e) {
-    std::cerr << "study: " << e.what() << "\n";
+    std::cerr << "study: " << capsule::terminal_text(e.what()) << "\n";
     return exit_usage;
   } catch (const RunStillGoing& e) {
-    std::cerr << "study: " << e.what() << "\n";
+    std::cerr << "study: " << capsule::terminal_text(e.what()) << "\n";
     return exit_run_still_going;
   } catch (const std::exception& e) {
-    std::cerr << "study: " << e.what() << "\n";
+    std::cerr << "study: " << capsule::terminal_text(e.what()) << "\n";
     return exit_failure;
   }
 }
