@@ -14,6 +14,7 @@
 #include "solver/io/member_file.hpp"
 #include "solver/scene/json_text.hpp"
 #include "solver/scene/memory_estimate.hpp"
+#include "study/plan/analysis_keys.hpp"
 #include "study/plan/concurrency.hpp"
 #include "study/plan/duration_text.hpp"
 #include "study/state/campaign_owner.hpp"
@@ -28,6 +29,15 @@ std::string format_number(double x) {
   char text[32];
   std::snprintf(text, sizeof text, "%.3g", x);
   return text;
+}
+
+// What `capsule check` says of a member that needs more than this machine's physical memory
+// (the same estimate, solver/scene/memory_estimate.hpp); "" when it fits.
+std::string memory_note(const CostEstimate& c) {
+  const double have = physical_memory_bytes();
+  if (have <= 0 || c.memory_bytes <= have) return "";
+  return "  -- needs about " + format_bytes(c.memory_bytes) + " of memory, more than this machine's " + format_bytes(have) +
+         ": capsule check refuses it here (lower resolution.a or resolution.domain, or run it on a larger machine)";
 }
 }  // namespace
 
@@ -91,6 +101,7 @@ PlanSummary print_plan(const Campaign& plan_campaign, const ResultsLayout& layou
       [&](Member&& m) {
         if (++read % kProgressEvery == 0) out << "  read " << read << " of about " << expected << "\n" << std::flush;
         strays.erase(m.dir_name());
+        if (read == 1) check_analysis_keys(plan_campaign, m.scene);
         const MemberCondition condition = inspect_member(layout.member(m), m.id);
         add_measurement(speed, m, layout.member(m));
         for (std::size_t c = 0; c < selection.where.size(); ++c)
@@ -173,6 +184,7 @@ PlanSummary print_plan(const Campaign& plan_campaign, const ResultsLayout& layou
               << ")";
         if (copy_from) out << "  -- finished in " << copy_from->campaign << ": `study run` copies it";
         else if (!condition.reason.empty()) out << "  -- " << condition.reason;
+        if (pending) out << memory_note(c);
         out << "\n";
       },
       [&](std::size_t member_index, const std::string& case_name) {
