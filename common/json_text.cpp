@@ -84,7 +84,7 @@ json parse_json_text(const std::string& text, const std::string& source) {
     std::string allowed;
     if (dynamic_cast<const json::out_of_range*>(&e) != nullptr)
       allowed = " (allowed: numbers of magnitude below 1.8e308)";
-    else if (what.find("invalid literal") != std::string::npos)
+    else if (what.find("invalid literal") != std::string::npos || what.find("invalid number") != std::string::npos)
       allowed = " (allowed: a number, string, true, false, null, object or array; NaN and Infinity are not JSON)";
     throw JsonTextError(source + ": " + where + ": not valid JSON: " + message_text(what) + allowed);
   }
@@ -104,6 +104,14 @@ std::string escape_controls(const std::string& text) {
     }
   }
   return out;
+}
+
+std::string terminal_text(const std::string& text) {
+  std::string out;
+  std::size_t from = 0;
+  for (std::size_t at; (at = text.find('\n', from)) != std::string::npos; from = at + 1)
+    out.append(escape_controls(text.substr(from, at - from))).append("\n");
+  return out.append(escape_controls(text.substr(from)));
 }
 
 std::string message_text(const std::string& text) {

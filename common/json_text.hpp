@@ -27,6 +27,9 @@ inline constexpr std::size_t kMessageChars = 120;
 // Control characters (and DEL) escaped as \u00XX, everything else as it is, uncut: a campaign's
 // text as the terminal gets it (an ESC that would recolour it, a CR that would overwrite the line).
 std::string escape_controls(const std::string& text);
+// A message for the terminal: as escape_controls, but a line break stays one (messages of
+// several lines); what a campaign or a file put in it never recolours or retitles the terminal.
+std::string terminal_text(const std::string& text);
 std::string message_text(const std::string& text);
 // A JSON value as an error message shows it: its JSON text, escaped and cut as above.
 std::string message_value(const nlohmann::json& value);

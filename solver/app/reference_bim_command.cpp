@@ -20,28 +20,28 @@ Command add_reference_bim_command(CLI::App& capsule) {
              "Example: capsule reference-bim --ca 0.1 --level 3 --steady 1e-4\n"
              "Exit status: 0 done, 1 the run failed (unstable or a file could not be written), 2 bad command line.");
   auto& c = o.capsule;
-  app.add_option("--ca", c.Ca, "capillary number mu k a / E_s (34)")->required()->check(CLI::Range(1e-5, 10.0));
+  app.add_option("--ca", c.Ca, "capillary number mu k a / E_s (34)")->required()->check(capsule::cli::finite_number_in(1e-5, 10.0, true));
   add_choice_option(app, "--law", c.law, "membrane law");
-  app.add_option("--C", c.C, "Skalak area-dilation constant")->capture_default_str()->check(CLI::PositiveNumber);
-  app.add_option("--eb", c.E_b, "bending modulus E_B / (a^2 E_s)")->capture_default_str()->check(CLI::Range(0.0, 10.0));
+  app.add_option("--C", c.C, "Skalak area-dilation constant")->capture_default_str()->check(capsule::cli::finite_number_in(0, 1e3));
+  app.add_option("--eb", c.E_b, "bending modulus E_B / (a^2 E_s)")->capture_default_str()->check(capsule::cli::finite_number_in(0.0, 10.0, true));
   app.add_option("--level", c.level, "icosphere level (2: 162, 3: 642, 4: 2562, 5: 10242 vertices)")
       ->capture_default_str()->check(CLI::Range(1, 6));
-  app.add_option("--kt", o.kt_end, "shear until this kt (with --steady: at most)")->capture_default_str()->check(CLI::Range(1e-3, 1000.0));
+  app.add_option("--kt", o.kt_end, "shear until this kt (with --steady: at most)")->capture_default_str()->check(capsule::cli::finite_number_in(1e-3, 1000.0, true));
   app.add_option("--steady", o.steady_tolerance,
                  "stop once the range of D over the last --steady-window kt is below this (0: run to --kt)")
-      ->capture_default_str()->check(CLI::Range(0.0, 1.0));
-  app.add_option("--steady-window", o.steady_window_kt, "window of --steady, in kt")->capture_default_str()->check(CLI::Range(0.05, 100.0));
-  app.add_option("--cfl", c.cfl, "time step as a fraction of the explicit limit")->capture_default_str()->check(CLI::Range(1e-3, 2.0));
-  app.add_option("--dt", c.dt, "time step in kt units (overrides --cfl)")->check(CLI::Range(1e-7, 1.0));
-  app.add_option("--every", o.every, "series interval in kt")->capture_default_str()->check(CLI::Range(1e-4, 100.0));
+      ->capture_default_str()->check(capsule::cli::finite_number_in(0.0, 1.0, true));
+  app.add_option("--steady-window", o.steady_window_kt, "window of --steady, in kt")->capture_default_str()->check(capsule::cli::finite_number_in(0.05, 100.0, true));
+  app.add_option("--cfl", c.cfl, "time step as a fraction of the explicit limit")->capture_default_str()->check(capsule::cli::finite_number_in(1e-3, 2.0, true));
+  app.add_option("--dt", c.dt, "time step in kt units (overrides --cfl)")->check(capsule::cli::finite_number_in(1e-7, 1.0, true));
+  app.add_option("--every", o.every, "series interval in kt")->capture_default_str()->check(capsule::cli::finite_number_in(1e-4, 100.0, true));
   app.add_option("--singular-gauss", c.quadrature.singular_gauss_points, "Gauss points per direction on the target's own triangles")
       ->capture_default_str()->check(CLI::IsMember({4, 6, 8, 12, 16}));
   app.add_option("--near-gauss", c.quadrature.near_gauss_points, "Gauss points per direction on the other near triangles")
       ->capture_default_str()->check(CLI::IsMember({4, 6, 8, 12, 16}));
   app.add_option("--near", c.quadrature.near_factor, "near zone, in longest edges of a triangle")
-      ->capture_default_str()->check(CLI::Range(0.0, 20.0));
+      ->capture_default_str()->check(capsule::cli::finite_number_in(0.0, 20.0, true));
   app.add_option("--near-radius", c.quadrature.near_radius, "near zone, in units of a (the larger of the two applies)")
-      ->capture_default_str()->check(CLI::Range(0.0, 4.0));
+      ->capture_default_str()->check(capsule::cli::finite_number_in(0.0, 4.0, true));
   app.add_option("-o,--series", o.series_path, "CSV file for the shape series (kt, D, theta, ...)");
   return {&app, [options] {
     try {

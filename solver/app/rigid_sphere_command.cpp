@@ -62,21 +62,21 @@ Command add_rigid_sphere_command(CLI::App& capsule) {
              "(10/3) pi mu a^3 k), their change over the last kt, and the leakage.\n"
              "Example: capsule rigid-sphere --a 7 --level 3 -o series.csv\n"
              "Exit status: 0 done, 1 the run failed (blow-up, or a file could not be written), 2 bad command line.");
-  app.add_option("--a", o.a, "sphere radius in lattice nodes")->capture_default_str()->check(CLI::Range(2.0, 64.0));
-  app.add_option("--marker-radius", o.marker_radius, "radius of the markers (default: a)")->check(CLI::Range(1.0, 96.0));
+  app.add_option("--a", o.a, "sphere radius in lattice nodes")->capture_default_str()->check(capsule::cli::finite_number_in(2.0, 64.0, true));
+  app.add_option("--marker-radius", o.marker_radius, "radius of the markers (default: a)")->check(capsule::cli::finite_number_in(1.0, 96.0, true));
   app.add_option("--level", o.level, "icosphere level (3: 642, 4: 2562 markers)")->capture_default_str()->check(CLI::Range(1, 6));
   app.add_option("--domain", domain, "box in units of a: x y z (default 10 10 8, the 3D capsule's)")->expected(3)
-      ->check(CLI::Range(3.0, 40.0));
-  app.add_option("--re", o.Re, "Reynolds number k a^2 / nu")->capture_default_str()->check(CLI::Range(1e-4, 1.0));
-  app.add_option("--tau", o.tau, "relaxation time")->capture_default_str()->check(CLI::Range(0.51, 5.0));
+      ->check(capsule::cli::finite_number_in(3.0, 40.0, true));
+  app.add_option("--re", o.Re, "Reynolds number k a^2 / nu")->capture_default_str()->check(capsule::cli::finite_number_in(1e-4, 1.0, true));
+  app.add_option("--tau", o.tau, "relaxation time")->capture_default_str()->check(capsule::cli::finite_number_in(0.51, 5.0, true));
   app.add_option("--spin", o.spin, "rotation rate of the shell about z, in units of k (0 held, -0.5 free)")
-      ->capture_default_str()->check(CLI::Range(-2.0, 2.0));
-  app.add_option("--kt", o.kt, "run until this kt")->capture_default_str()->check(CLI::Range(0.01, 100.0));
+      ->capture_default_str()->check(capsule::cli::finite_number_in(-2.0, 2.0, true));
+  app.add_option("--kt", o.kt, "run until this kt")->capture_default_str()->check(capsule::cli::finite_number_in(0.01, 100.0, true));
   app.add_option("--gain", o.gain, "tether gain: force per unit lag of a marker behind its anchor")
-      ->capture_default_str()->check(CLI::Range(1e-5, 1.0));
+      ->capture_default_str()->check(capsule::cli::finite_number_in(1e-5, 1.0, true));
   add_choice_option(app, "--kernel", o.delta, "IB delta");
   add_choice_option(app, "--precision", o.precision, "fluid populations");
-  app.add_option("--every", o.every, "series interval in kt")->capture_default_str()->check(CLI::Range(1e-3, 100.0));
+  app.add_option("--every", o.every, "series interval in kt")->capture_default_str()->check(capsule::cli::finite_number_in(1e-3, 100.0, true));
   app.add_option("-o,--series", series, "CSV file for the series (kt, torque, stresslet, leakage, lag)");
   return {&app, [settings] {
     auto& [o, series, domain] = *settings;
@@ -116,22 +116,22 @@ Command add_rigid_circle_command(CLI::App& capsule) {
              "(2 pi mu a^2 k (1 + 2 spin), 2 pi mu a^2 k), their change over the last kt, and the leakage.\n"
              "Example: capsule rigid-circle --a 10 --kt 5\n"
              "Exit status: 0 done, 1 the run failed (blow-up, or a file could not be written), 2 bad command line.");
-  app.add_option("--a", o.a, "circle radius in lattice nodes")->capture_default_str()->check(CLI::Range(2.0, 200.0));
-  app.add_option("--marker-radius", o.marker_radius, "radius of the markers (default: a)")->check(CLI::Range(1.0, 300.0));
+  app.add_option("--a", o.a, "circle radius in lattice nodes")->capture_default_str()->check(capsule::cli::finite_number_in(2.0, 200.0, true));
+  app.add_option("--marker-radius", o.marker_radius, "radius of the markers (default: a)")->check(capsule::cli::finite_number_in(1.0, 300.0, true));
   app.add_option("--segments", o.segments, "markers on the circle (the 2D capsule's default 140)")->capture_default_str()
       ->check(CLI::Range(16, 100000));
   app.add_option("--domain", domain, "channel in units of a: x y (default 16 12, the 2D capsule's)")->expected(2)
-      ->check(CLI::Range(3.0, 100.0));
-  app.add_option("--re", o.Re, "Reynolds number k a^2 / nu")->capture_default_str()->check(CLI::Range(1e-4, 1.0));
-  app.add_option("--tau", o.tau, "relaxation time")->capture_default_str()->check(CLI::Range(0.51, 5.0));
+      ->check(capsule::cli::finite_number_in(3.0, 100.0, true));
+  app.add_option("--re", o.Re, "Reynolds number k a^2 / nu")->capture_default_str()->check(capsule::cli::finite_number_in(1e-4, 1.0, true));
+  app.add_option("--tau", o.tau, "relaxation time")->capture_default_str()->check(capsule::cli::finite_number_in(0.51, 5.0, true));
   app.add_option("--spin", o.spin, "rotation rate of the circle, in units of k (0 held, -0.5 free)")
-      ->capture_default_str()->check(CLI::Range(-2.0, 2.0));
-  app.add_option("--kt", o.kt, "run until this kt")->capture_default_str()->check(CLI::Range(0.01, 100.0));
+      ->capture_default_str()->check(capsule::cli::finite_number_in(-2.0, 2.0, true));
+  app.add_option("--kt", o.kt, "run until this kt")->capture_default_str()->check(capsule::cli::finite_number_in(0.01, 100.0, true));
   app.add_option("--gain", o.gain, "tether gain: force per unit lag of a marker behind its anchor")
-      ->capture_default_str()->check(CLI::Range(1e-5, 1.0));
+      ->capture_default_str()->check(capsule::cli::finite_number_in(1e-5, 1.0, true));
   add_choice_option(app, "--kernel", o.delta, "IB delta");
   add_choice_option(app, "--precision", o.precision, "fluid populations");
-  app.add_option("--every", o.every, "series interval in kt")->capture_default_str()->check(CLI::Range(1e-3, 100.0));
+  app.add_option("--every", o.every, "series interval in kt")->capture_default_str()->check(capsule::cli::finite_number_in(1e-3, 100.0, true));
   app.add_option("-o,--series", series, "CSV file for the series (kt, torque, stresslet, leakage, lag)");
   return {&app, [settings] {
     auto& [o, series, domain] = *settings;

@@ -1,7 +1,10 @@
 #include "solver/io/output_path.hpp"
 
-#include <filesystem>
 #include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
 
 namespace capsule::io {
 
@@ -16,7 +19,8 @@ std::string output_path_problem(const std::string& path) {
   const fs::path parent = fs::absolute(p, ec).parent_path();
   if (!fs::exists(parent, ec)) return path + ": the folder " + parent.string() + " does not exist";
   if (!fs::is_directory(parent, ec)) return path + ": " + parent.string() + " is not a folder";
-  if (::access(parent.c_str(), W_OK | X_OK) != 0) return path + ": cannot write in the folder " + parent.string();
+  if (::access(parent.c_str(), W_OK | X_OK) != 0)
+    return path + ": cannot write in the folder " + parent.string() + ": " + std::strerror(errno);
   return "";
 }
 

@@ -11,6 +11,7 @@
 
 #include "solver/ib/hydrodynamic_radius.hpp"
 #include "common/json_text.hpp"
+#include "solver/scene/run_bounds.hpp"
 #include "solver/scene/user_hints.hpp"
 
 namespace capsule {
@@ -23,6 +24,10 @@ std::string fmt(double v) {
   s << v;
   return s.str();
 }
+
+// -0.0 read as 0.0: the canonical text (and so the member id) of a scene must not depend on
+// the sign of a zero, which changes nothing the solver computes.
+double unsigned_zero(double x) { return x == 0.0 ? 0.0 : x; }
 
 // Reads one JSON object, remembering which keys were used so the rest can be refused. A key
 // the object does not know is refused first, before any missing or bad value (a misspelt
@@ -62,7 +67,7 @@ class ObjectReader {
     double x = v.get<double>();
     if (!std::isfinite(x) || (lo_open ? x <= lo : x < lo) || (hi_open ? x >= hi : x > hi))
       fail(key, "value " + fmt(x) + " out of range", range);
-    return x;
+    return unsigned_zero(x);
   }
 
   int integer(const std::string& key, int fallback, int lo, int hi) {
@@ -109,7 +114,7 @@ class ObjectReader {
       if (!e.is_number()) fail(key, "expected numbers, got " + message_value(e), range);
       double x = e.get<double>();
       if (!std::isfinite(x) || x < lo || x > hi) fail(key, "value " + fmt(x) + " out of range", range);
-      out.push_back(x);
+      out.push_back(unsigned_zero(x));
     }
     return out;
   }
@@ -363,11 +368,11 @@ void read_lattice(ObjectReader& q, const json& res, Scene& s, const SceneDefault
   s.mesh_level = q.integer("mesh_level", 4, 0, 6);
   if (q.has("tau")) {
     const json& t = res.at("tau");
-    if (!t.is_number() || (t.get<double>() != 0.0 &&
-                           (t.get<double>() < 0.505 || t.get<double>() > 10.0)))
-      q.fail("tau", "relaxation time " + message_value(t) + " cannot be run stably",
-             "0 (chosen by the solver) or [0.505, 10]");
-    s.tau = t.get<double>();
+    const std::string allowed = "0 (chosen by the solver) or [0.505, 10]";
+    if (!t.is_number()) q.fail("tau", "expected a number, got " + message_value(t), allowed);
+    if (t.get<double>() != 0.0 && (t.get<double>() < 0.505 || t.get<double>() > 10.0))
+      q.fail("tau", "relaxation time " + message_value(t) + " cannot be run stably", allowed);
+    s.tau = unsigned_zero(t.get<double>());
   }
 }
 
@@ -498,6 +503,7 @@ Scene Scene::from_json(const json& j, const std::string& source) {
   read_protocol_and_output(r, s);
   r.refuse_unknown();
   ignore_other_dimension(s);
+  check_run_bounds(s, source);
   return s;
 }
 

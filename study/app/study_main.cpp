@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "common/cli_support.hpp"
+#include "common/json_text.hpp"
 #include "solver/scene/scene.hpp"
 #include "solver/scene/version.hpp"
 #include "study/campaign/campaign_error.hpp"
@@ -59,7 +60,7 @@ int main(int argc, char** argv) {
   try {
     return main_body(argc, argv);
   } catch (const std::exception& e) {
-    std::cerr << "study: " << e.what() << "\n";
+    std::cerr << "study: " << capsule::terminal_text(e.what()) << "\n";
     return exit_status_of(e);
   }
 }

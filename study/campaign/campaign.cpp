@@ -10,6 +10,7 @@
 #include "solver/scene/user_hints.hpp"
 #include "study/campaign/campaign_error.hpp"
 #include "study/campaign/json_path.hpp"
+#include "study/campaign/member_count.hpp"
 
 namespace capsule::study {
 
@@ -193,6 +194,7 @@ Campaign parse_campaign(const std::string& text, const std::string& source) {
       throw CampaignError(e.what());
     }
   }
+  check_member_count(c);
   return c;
 }
 

@@ -9,6 +9,8 @@
 
 #include "study/state/exit_status.hpp"
 #include "study/commands/report_freshness.hpp"
+#include "study/commands/thesis_inputs.hpp"
+#include "study/state/member_leftovers.hpp"
 #include "study/slurm/slurm_queue.hpp"
 
 #include "analysis/compare/campaign_compare.hpp"
@@ -53,13 +55,14 @@ ReportMembers report_members(const CampaignSurvey& survey, std::ostream& out) {
   for (std::size_t i = 0; i < survey.members.size(); ++i) {
     const Member& m = survey.members[i];
     const MemberPaths p = survey.layout.member(m);
-    if (!fs::exists(p.h5)) {
+    std::error_code ec;
+    if (survey.conditions[i].state == MemberState::unreadable) {  // a member file or a folder it cannot read
+      r.unreadable.push_back(m.dir_name() + ": " + survey.conditions[i].reason);
+      continue;
+    } else if (!fs::exists(p.h5, ec)) {
       // Never run, running, or killed: no file to analyse, but the report lists it (as "member
       // file missing") so that a table of a campaign still under way says what it lacks.
       r.not_run.push_back(m.dir_name() + ": " + state_name(survey.conditions[i].state));
-    } else if (survey.conditions[i].state == MemberState::unreadable) {
-      r.unreadable.push_back(m.dir_name() + ": " + survey.conditions[i].reason);
-      continue;
     } else if (survey.conditions[i].state == MemberState::failed) {
       // The member's own file only: inspect_member checks its member_id (a file copied from
       // another campaign, or made by older physics, is "failed", as in `study status`).
@@ -115,7 +118,8 @@ int report_campaign(const CampaignSurvey& survey, const ReportOptions& options, 
   const fs::path report_dir = survey.layout.report_dir();
   // Written into a staging folder and swapped in whole: a report is never half of one, and a
   // run that refuses leaves the previous report as it was.
-  const fs::path staging = report_dir.string() + ".staging." + std::to_string(::getpid());
+  remove_dead_report_stagings(report_dir);  // of reports killed before their swap
+  const fs::path staging = report_staging_dir(report_dir);
   analysis::ReportRequest request;
   request.campaign_name = survey.campaign.name;
   request.campaign_file = survey.campaign.source;
@@ -158,6 +162,7 @@ int report_campaign(const CampaignSurvey& survey, const ReportOptions& options, 
                    "and every fit, model or ladder that needs them is missing or rests on the others; "
                    "`study run` completes them and `study report` then writes the whole report.\n\n",
                members.not_run, summary);
+  write_fits_hash(staging);  // `study thesis` reads fits.json only as written here
   swap_in(staging, report_dir);
   print_written(summary, staging, report_dir, out);
   return unreadable.empty() ? members_exit_code(survey) : exit_members_failed;
@@ -182,6 +187,7 @@ int compare_campaign_files(const std::vector<std::string>& campaign_files, bool 
 }
 
 int write_dissertation_comparison(const fs::path& results_dir, const fs::path& out_file, std::ostream& out) {
+  for (const auto& warning : thesis_input_warnings(results_dir)) out << warning << "\n";
   const analysis::DissertationSummary s = analysis::write_dissertation(results_dir.string(), out_file.string());
   out << "wrote " << s.file << "\nclaims: " << s.claims_agree << " agree, " << s.claims_differ << " differ, "
       << s.claims_in_part << " hold in part, " << s.claims_cannot_tell << " cannot tell (rows: " << s.agrees << " / "

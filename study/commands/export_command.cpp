@@ -67,9 +67,9 @@ cli::Command add_export_command(CLI::App& study) {
                  "CPUs per task (default: 1 for 2D, " + std::to_string(default_3d_cpus) + " for 3D)")
       ->check(count);
   app.add_option("--time", o.time, "Slurm --time per task (default: from the cost estimate of the largest member)")
-      ->check(slurm_form(is_slurm_time, "minutes, H:MM:SS, D-HH[:MM[:SS]]"));
+      ->check(slurm_form(is_slurm_time, "minutes, H:MM:SS, D-HH[:MM[:SS]], at most 8 digits a number"));
   app.add_option("--mem", o.mem, "Slurm --mem per task (default: from the lattice size of the largest member)")
-      ->check(slurm_form(is_slurm_mem, "megabytes, or a number with K, M, G or T"));
+      ->check(slurm_form(is_slurm_mem, "megabytes, or a number with K, M, G or T, at most 12 digits"));
   app.add_flag("--rerun-unstable", o.rerun_unstable, "include members that ended unstable");
   app.add_flag("--allow-dirty", o.allow_dirty, "export even when this build's sources differ from every commit");
   app.add_flag("--rerun-stopped", o.rerun_stopped, "include members that stopped");

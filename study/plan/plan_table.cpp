@@ -14,6 +14,7 @@
 #include "solver/io/member_file.hpp"
 #include "common/json_text.hpp"
 #include "solver/scene/memory_estimate.hpp"
+#include "study/plan/analysis_keys.hpp"
 #include "study/plan/concurrency.hpp"
 #include "study/state/duration_text.hpp"
 #include "study/state/campaign_owner.hpp"
@@ -28,6 +29,15 @@ std::string format_number(double x) {
   char text[32];
   std::snprintf(text, sizeof text, "%.3g", x);
   return text;
+}
+
+// What `capsule check` says of a member that needs more than this machine's physical memory
+// (the same estimate, solver/scene/memory_estimate.hpp); "" when it fits.
+std::string memory_note(const CostEstimate& c) {
+  const double have = physical_memory_bytes();
+  if (have <= 0 || c.memory_bytes <= have) return "";
+  return "  -- needs about " + format_bytes(c.memory_bytes) + " of memory, more than this machine's " + format_bytes(have) +
+         ": capsule check refuses it here (lower resolution.a or resolution.domain, or run it on a larger machine)";
 }
 
 // About how many members the campaign expands to (its cases' sweeps, or its own).
@@ -101,6 +111,7 @@ class PlanPrinter {
         [&](Member&& m) {
           if (++read % kProgressEvery == 0) out_ << "  read " << read << " of about " << expected << "\n" << std::flush;
           strays_.erase(m.dir_name());
+          if (read == 1) check_analysis_keys(campaign_, m.scene);
           const MemberCondition condition = inspect_member(layout_.member(m), m.id);
           add_measurement(speed_, m, layout_.member(m));
           for (std::size_t c = 0; c < selection_.where.size(); ++c)
@@ -179,6 +190,7 @@ class PlanPrinter {
       out_ << " (" << (m.case_name.empty() ? "" : "case " + m.case_name + (params.empty() ? "" : "; ")) << params << ")";
     if (copy_from) out_ << "  -- finished in " << copy_from->campaign << ": `study run` copies it";
     else if (!condition.reason.empty()) out_ << "  -- " << condition.reason;
+    if (pending) out_ << memory_note(c);
     out_ << "\n";
   }
 

@@ -10,6 +10,8 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include "study/run/lock_holders.hpp"
+#include "study/state/process_alive.hpp"
 #include "study/state/results_layout.hpp"
 #include "study/state/run_record.hpp"
 
@@ -21,7 +23,7 @@ namespace {
 
 std::string pid_state(long pid) {
   if (pid <= 0) return "not started";
-  if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM) return "running";
+  if (process_alive(pid)) return "running";  // a killed one left a zombie where PID 1 does not reap
   return "no longer running";
 }
 
@@ -53,7 +55,8 @@ RunLock::RunLock(const fs::path& lock_file, const fs::path& info_file, const std
   if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
     ::close(fd_);
     fd_ = -1;
-    throw RunStillGoing(describe_running(info_file, running_members) + " (" + lock_file.string() + " is locked)");
+    throw RunStillGoing(describe_running(info_file, running_members) + " (" + lock_file.string() + " is locked" +
+                        describe_lock_holders(lock_file) + ")");
   }
   record(0);
 }

@@ -37,21 +37,22 @@ long estimated_megabytes(const Member& member) {
 }
 
 bool is_slurm_time(const std::string& text) {
-  static const std::regex form(R"(^(\d+|\d+:\d{1,2}(:\d{1,2})?|\d+-\d{1,2}(:\d{1,2}(:\d{1,2})?)?)$)");
+  // At most 8 digits before the first separator: 10^8 minutes (190 years) is past any queue.
+  static const std::regex form(R"(^(\d{1,8}|\d{1,8}:\d{1,2}(:\d{1,2})?|\d{1,8}-\d{1,2}(:\d{1,2}(:\d{1,2})?)?)$)");
   return std::regex_match(text, form);
 }
 
 bool is_slurm_mem(const std::string& text) {
-  static const std::regex form(R"(^\d+[KMGT]?$)");
+  static const std::regex form(R"(^\d{1,12}[KMGT]?$)");  // 10^12 of any unit is past any node
   return std::regex_match(text, form);
 }
 
 SlurmResources slurm_resources(const std::vector<const Member*>& pending, int threads, const std::string& time,
                                const std::string& mem) {
   if (!time.empty() && !is_slurm_time(time))
-    throw std::invalid_argument("--time \"" + time + "\" is not a Slurm time (allowed: minutes, H:MM:SS, D-HH[:MM[:SS]])");
+    throw std::invalid_argument("--time \"" + time + "\" is not a Slurm time (allowed: minutes, H:MM:SS, D-HH[:MM[:SS]], at most 8 digits a number)");
   if (!mem.empty() && !is_slurm_mem(mem))
-    throw std::invalid_argument("--mem \"" + mem + "\" is not a Slurm memory size (allowed: megabytes, or a number with K, M, G or T)");
+    throw std::invalid_argument("--mem \"" + mem + "\" is not a Slurm memory size (allowed: megabytes, or a number with K, M, G or T, at most 12 digits)");
   SlurmResources r;
   bool any_3d = false;
   for (const Member* m : pending) any_3d = any_3d || m->scene.at("dim").get<int>() == 3;

@@ -5,6 +5,7 @@
 
 #include "study/state/member_lock.hpp"
 #include "study/state/campaign_owner.hpp"
+#include "study/state/member_leftovers.hpp"
 
 namespace capsule::study {
 
@@ -52,6 +53,16 @@ std::vector<std::string> members_in_progress(const CampaignSurvey& survey) {
   return names;
 }
 
+namespace {
+
+bool can_look_into(const fs::path& dir) {
+  std::error_code ec;
+  (void)fs::symlink_status(dir / "scene.json", ec);
+  return !ec || ec == std::errc::no_such_file_or_directory;
+}
+
+}  // namespace
+
 void prepare_member_directories(const CampaignSurvey& survey) {
   fs::create_directories(survey.layout.members_dir());
   record_campaign(survey.campaign, survey.layout);
@@ -59,10 +70,13 @@ void prepare_member_directories(const CampaignSurvey& survey) {
     const Member& m = survey.members[i];
     const MemberPaths p = survey.layout.member(m);
     if (!linked_member_folder(p.dir).empty()) continue;  // unreadable: nothing is written through it
+    // A folder it cannot look into (no permission): named in the summary, nothing written there.
+    if (survey.conditions[i].state == MemberState::unreadable && !can_look_into(p.dir)) continue;
     fs::create_directories(p.dir);
     // A complete member keeps the scene.json it ran with (its member file records the scene
     // too): a pass over a finished campaign changes no committed file, even where today's
     // canonical scene spells the same member differently (a key a later version writes).
+    if (survey.conditions[i].state == MemberState::complete) remove_complete_member_leftovers(p, m.id);
     if (survey.conditions[i].state == MemberState::complete && fs::exists(p.scene)) continue;
     const std::string text = m.scene.dump(2) + "\n";
     if (!fs::exists(p.scene) || read_file_text(p.scene) != text) write_file_atomically(p.scene, text);

@@ -14,6 +14,7 @@
 #include <sstream>
 #include <vector>
 
+#include "common/json_text.hpp"
 #include "solver/io/member_file.hpp"
 #include "study/state/duration_text.hpp"
 #include "study/state/member_lock.hpp"
@@ -33,7 +34,7 @@ std::string last_line(const fs::path& path) {
   std::string line, last;
   while (std::getline(in, line))
     if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
-  return last;
+  return escape_controls(last);  // a log's line, shown in status: no terminal escapes
 }
 
 std::string exit_meaning(int code) {
@@ -47,6 +48,13 @@ std::string exit_meaning(int code) {
     case 127: return "capsule binary not found";
     default: return code > 128 ? "killed by signal " + std::to_string(code - 128) : "exit status " + std::to_string(code);
   }
+}
+
+// Ended by a signal someone sent (kill, kill -9, the OOM killer, a hang-up, Ctrl-C), not one
+// the solver raised itself (SIGSEGV, SIGABRT, SIGFPE, SIGBUS stay failures).
+bool killed_from_outside(int code) {
+  const int signal = code - 128;
+  return signal == SIGHUP || signal == SIGINT || signal == SIGKILL || signal == SIGTERM;
 }
 
 double age_seconds(const fs::path& file) {
@@ -85,7 +93,7 @@ MemberCondition member_file_condition(const MemberPaths& paths, const std::strin
                                                  "run the member again): ") + e.what()};
   }
   if (s.member_id != expected_id)
-    return {MemberState::failed, "member file belongs to member \"" + s.member_id + "\", not " + expected_id};
+    return {MemberState::failed, "member file belongs to member " + message_value(s.member_id) + ", not " + expected_id};
   if (s.status == "complete") {
     // Said only of a file that reads whole: its root attributes alone can be edited or sit on a
     // damaged dataset (verified once per version of the file, member_verification.hpp).
@@ -94,9 +102,9 @@ MemberCondition member_file_condition(const MemberPaths& paths, const std::strin
                                        "aside to run the member again): " + why};
     return {MemberState::complete, ""};
   }
-  if (s.status.rfind("unstable", 0) == 0) return {MemberState::unstable, s.status};
-  if (s.status.rfind("stopped", 0) == 0) return {MemberState::stopped, s.status};
-  return {MemberState::failed, "member file has status \"" + s.status + "\""};
+  if (s.status.rfind("unstable", 0) == 0) return {MemberState::unstable, escape_controls(s.status)};
+  if (s.status.rfind("stopped", 0) == 0) return {MemberState::stopped, escape_controls(s.status)};
+  return {MemberState::failed, "member file has status " + message_value(s.status)};
 }
 
 // The state the wrapper's exit_status file says of a member without a member file: interrupted
@@ -118,6 +126,9 @@ MemberCondition exit_status_condition(const MemberPaths& paths) {
   }
   if (code > 128 && fs::exists(paths.restart, ec))  // killed (SIGKILL, the OOM killer): resumable
     return {MemberState::interrupted, exit_meaning(code) + "; `study run` continues it from its restart point"};
+  if (killed_from_outside(code))  // not the member's failure: it runs again, from the start
+    return {MemberState::interrupted, exit_meaning(code) + " before its first restart point; `study run` runs it "
+                                                           "again from the start"};
   if (code != 0) {
     std::string reason = exit_meaning(code);
     const std::string tail = last_line(paths.log);

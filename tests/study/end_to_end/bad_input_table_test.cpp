@@ -63,6 +63,21 @@ std::string scene_raw(const std::string& key, const std::string& raw) {
   return text;
 }
 
+// A campaign whose grid has `axes` keys of `values` values each (keys named k0, k1, ... unless
+// given): a member count that overflows, or is absurd, before any scene is made.
+std::string campaign_with_grid(int axes, int values, const std::vector<std::string>& keys = {}) {
+  json j = campaign();
+  j["sweep"]["grid"] = json::object();
+  for (int a = 0; a < axes; ++a) {
+    json list = json::array();
+    for (int v = 1; v <= values; ++v) list.push_back(0.001 * v);
+    std::string key = "k";  // append(): GCC 12 -O3 false -Wrestrict on "literal" + string
+    key.append(std::to_string(a));
+    j["sweep"]["grid"][a < static_cast<int>(keys.size()) ? keys[a] : key] = list;
+  }
+  return j.dump();
+}
+
 struct Row {
   std::string what;
   std::string program;              // "capsule" or "study"
@@ -157,7 +172,11 @@ TEST_CASE("the bad-input table: every refusal exits with its code and names the 
       {"capsule --threads -1", "capsule", {"FILE", "-o", "out.h5", "--threads", "-1"}, "s.json", scene_2d().dump(), 2,
        {"--threads", "must be a whole number from 0 to 1000000"}},
       {"export --mem in words", "study", {"export", "FILE", "--slurm", "--mem", "lots"}, "c.json", campaign().dump(), 2,
-       {"--mem", "(allowed: megabytes, or a number with K, M, G or T)"}},
+       {"--mem", "(allowed: megabytes, or a number with K, M, G or T"}},
+      {"export --time of 20 digits", "study", {"export", "FILE", "--slurm", "--time", "99999999999999999999"}, "c.json",
+       campaign().dump(), 2, {"--time", "\"99999999999999999999\" is not in Slurm's form", "at most 8 digits a number)"}},
+      {"export --mem of 20 digits", "study", {"export", "FILE", "--slurm", "--mem", "99999999999999999999T"}, "c.json",
+       campaign().dump(), 2, {"--mem", "at most 12 digits)"}},
       {"--checkpoint-seconds nan", "study", {"run", "FILE", "--checkpoint-seconds", "nan"}, "c.json", campaign().dump(), 2,
        {"--checkpoint-seconds", "must be a number in (0, 10000000], got \"nan\""}},
       {"--checkpoint-seconds inf", "study", {"run", "FILE", "--checkpoint-seconds", "inf"}, "c.json", campaign().dump(), 2,
@@ -173,6 +192,63 @@ TEST_CASE("the bad-input table: every refusal exits with its code and names the 
       {"control characters in a campaign's description, printed by plan", "study", plan, "c.json",
        campaign_with([](json& j) { j["description"] = "\x1b]0;retitled\x07\x1b[31mred\rover"; }), 0,
        {"\\u001b]0;retitled\\u0007\\u001b[31mred\\u000dover"}},
+
+      // Sweep sizes: the product of the lengths is bounded before it can overflow.
+      {"grid of 20 keys x 10 values (10^20 members, over 2^64)", "study", plan, "c.json", campaign_with_grid(20, 10), 2,
+       {"FILE", "sweep: k0 (10 values) x k1 (10 values)", "makes more than 10000000 members", "(expected: at most 10000000 members in a campaign"}},
+      {"grid of 4 scene keys x 100 values (10^8 members)", "study", plan, "c.json",
+       campaign_with_grid(4, 100, {"Ca", "E_b", "eta", "c0"}), 2,
+       {"FILE", "Ca (100 values) x E_b (100 values) x c0 (100 values) x eta (100 values) makes more than 10000000 members"}},
+
+      // Values inside their ranges that no one means.
+      {"E_b = -0.0 reads as 0.0 (the member id does not see the sign of a zero)", "capsule", check, "s.json",
+       scene_raw("E_b", "-0.0"), 0, {"\"E_b\": 0.0"}},
+      {"E_b 0.0 and -0.0 in one grid make one member", "study", plan, "c.json",
+       campaign_with([](json& j) { j["sweep"]["grid"] = {{"E_b", {0.0, -0.0}}}; }), 2,
+       {"FILE", "E_b = -0.0 gives the same scene as E_b = 0.0"}},
+      {"Re = 1e-300: a run of 1e305 time steps", "capsule", check, "s.json", scene_with([](json& j) { j["Re"] = 1e-300; }), 2,
+       {"FILE", "Re: the run takes up to", "(allowed: at most 1e+10 time steps: Re >= "}},
+      {"output every 1e-300 kt", "capsule", check, "s.json",
+       scene_with([](json& j) { j["output"] = {{"interval_kt", 1e-300}}; }), 2,
+       {"FILE", "output.interval_kt: 1e-300 kt over a run of up to 2 kt makes 2e+300 rows", "(allowed: [2e-06, 10]"}},
+      {"V = 0.001 leaves the inside at tau = 0.5", "capsule", check, "s.json", scene_with([](json& j) { j["V"] = 0.001; }), 2,
+       {"FILE", "V: the capsule's inside relaxes at tau = 0.5 + V (tau - 0.5) = 0.50", "cannot be run stably",
+        "(allowed: V >= "}},
+      {"a campaign member with V = 0.001 refused at plan", "study", plan, "c.json",
+       campaign_with([](json& j) { j["sweep"]["grid"] = {{"V", {1, 0.001}}}; }), 2, {"FILE", "V = 0.001", "V: the capsule's inside relaxes"}},
+
+      // Messages: the range with every refusal, the right reason.
+      {"-Infinity", "capsule", check, "s.json", scene_raw("V", "-Infinity"), 2, {"FILE", "V: not valid JSON", "NaN and Infinity are not JSON"}},
+      {"tau given as a string", "capsule", check, "s.json", scene_with([](json& j) { j["resolution"]["tau"] = "0.6"; }), 2,
+       {"FILE", "resolution.tau: expected a number, got \"0.6\"", "(allowed: 0 (chosen by the solver) or [0.505, 10])"}},
+
+      // Numbers of capsule's other commands.
+      {"capsule rigid-sphere --re nan", "capsule", {"rigid-sphere", "--re", "nan"}, "", "", 2, {"--re", "must be a number in [0.0001, 1], got \"nan\""}},
+      {"capsule rigid-circle --tau inf", "capsule", {"rigid-circle", "--tau", "inf"}, "", "", 2, {"--tau", "must be a number in [0.51, 5], got \"inf\""}},
+      {"capsule reference-bim --ca nan", "capsule", {"reference-bim", "--ca", "nan"}, "", "", 2, {"--ca", "must be a number in [0.00001, 10], got \"nan\""}},
+      {"capsule reference-bim --C nan", "capsule", {"reference-bim", "--ca", "0.1", "--C", "nan"}, "", "", 2, {"--C", "must be a number in (0, 1000], got \"nan\""}},
+
+      // Plan: what the report or the machine would refuse later.
+      {"an analysis table naming a key the scene lacks", "study", plan, "c.json",
+       campaign_with([](json& j) { j["analysis"] = {{"tables", {{{"name", "t"}, {"x", "Cb"}, {"columns", {"response.k_tau_s"}}}}}}; }), 2,
+       {"FILE", "analysis.tables[0] (\"t\").x: \"Cb\" is not a key of the member scenes", "(expected: a scene key such as Ca"}},
+      {"a member that needs more memory than this machine has", "study", plan, "c.json",
+       campaign_with([](json& j) {
+         j["base"] = scene_3d();
+         j["base"]["resolution"]["a"] = 200;
+       }), 0, {"needs about", "more than this machine's", "capsule check refuses it here"}},
+
+      // Control characters in campaign text (and the command line) reach the terminal escaped.
+      {"an ESC in a swept key", "study", plan, "c.json", campaign_with([](json& j) { j["sweep"]["grid"] = {{"\x1b[31mCa", {0.1}}}; }), 2,
+       {"FILE", "\\u001b[31mCa = 0.1", "\\u001b[31mCa: unknown key"}},
+      {"an ESC in a zip key", "study", plan, "c.json",
+       campaign_with([](json& j) { j["sweep"] = {{"zip", {{"Ca", {0.1, 0.2}}, {"\x1b[31mV", {1}}}}}; }), 2,
+       {"FILE", "\\u001b[31mV\" has 1"}},
+      {"an OSC title sequence in analysis stability parameters", "study", plan, "c.json",
+       campaign_with([](json& j) { j["analysis"] = {{"stability", {{"parameters", {"\x1b]0;t\x07", "\x1b]0;t\x07"}}}}}; }), 2,
+       {"FILE", "\\u001b]0;t\\u0007\" listed twice"}},
+      {"an ESC in --case", "study", {"plan", "FILE", "--case", "\x1b[31mx"}, "c.json", campaign().dump(), 2,
+       {"--case \"\\u001b[31mx\" names no"}},
 
       {"results path with a line break", "study", {"export", "FILE", "--slurm", "--results", "r\nx"}, "c.json", campaign().dump(), 2,
        {"the results folder contains a control character", "refused in a generated script"}},

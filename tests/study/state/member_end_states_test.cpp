@@ -15,7 +15,7 @@
 using namespace capsule::study;
 namespace fs = std::filesystem;
 
-TEST_CASE("a member killed by a signal after a restart point is interrupted, not failed", "[study]") {
+TEST_CASE("a member killed by a signal is interrupted, not failed; a crash is a failure", "[study]") {
   const fs::path dir = testing::scratch_dir("killed_member");
   const MemberPaths p = member_paths_in(dir);
   testing::write_text(p.exit_status, "137\n");
@@ -26,7 +26,15 @@ TEST_CASE("a member killed by a signal after a restart point is interrupted, not
     CHECK(c.state == MemberState::interrupted);
     CHECK_THAT(c.reason, Catch::Contains("killed by signal 9") && Catch::Contains("continues it from its restart point"));
   }
-  SECTION("without one: failed, rerun from the start") {
+  SECTION("without one: interrupted all the same (killed from outside), run again from the start") {
+    testing::write_text(p.partial, "partial");
+    const MemberCondition c = inspect_member(p, "id");
+    CHECK(c.state == MemberState::interrupted);
+    CHECK_THAT(c.reason, Catch::Contains("killed by signal 9 before its first restart point") &&
+                             Catch::Contains("runs it again from the start"));
+  }
+  SECTION("a signal the solver raised itself (SIGSEGV) is a failure") {
+    testing::write_text(p.exit_status, "139\n");
     CHECK(inspect_member(p, "id").state == MemberState::failed);
   }
   fs::remove_all(dir);
