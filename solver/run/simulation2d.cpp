@@ -66,7 +66,7 @@ struct Simulation2D::Impl {
     const double r_eq = scale * (s.biconcave_2d == BiconcaveSize2d::dissertation ? s.a * membrane2d::biconcave_equivalent_radius() : s.a);
     auto xy = s.shape == Shape::biconcave ? membrane2d::biconcave(s.segments, r_eq, cx, cy, incline)
                                      : membrane2d::circle(s.segments, scale * s.a, cx, cy, incline);
-    return membrane2d::Membrane(std::move(xy), {u.E_s, membrane_bending_modulus(s, u), u.mu_s});
+    return membrane2d::Membrane(std::move(xy), {u.E_s, membrane_bending_modulus(s, u), u.mu_s}, elastic_law_2d(s.law));
   }
 
   Impl(const Scene& s, const Units& u, const std::vector<int>& n)

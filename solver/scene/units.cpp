@@ -97,6 +97,15 @@ membrane3d::ElasticLaw elastic_law_3d(MembraneLaw law) {
   throw std::invalid_argument("the law hooke is the 2D membrane's, not a 3D one");
 }
 
+membrane2d::ElasticLaw elastic_law_2d(MembraneLaw law) {
+  switch (law) {
+    case MembraneLaw::hooke: return membrane2d::ElasticLaw::hooke;
+    case MembraneLaw::neo_hookean:
+    case MembraneLaw::skalak: break;
+  }
+  throw std::invalid_argument("the law " + choice_name(law) + " is a 3D membrane's, not a 2D one");
+}
+
 double shear_modulus_3d(const Scene& s, const Units& u) {
   return membrane3d::law_modulus(elastic_law_3d(s.law), u.E_s);
 }
