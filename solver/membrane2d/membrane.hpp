@@ -71,7 +71,7 @@ class Membrane {
   // F = F_other - D^T tau_v (F_other: Hooke and bending at the current shape) and
   // tau_v = W D U, W_i = mu_s / l_i, (D U)_i = t_i . (U_{i+1} - U_i):
   //   (diag(l_i / mu_s) + D M D^T) tau_v = D (U_free + M F_other),
-  // symmetric positive definite, sparse (segments whose nodes' kernels overlap), solved by a
+  // symmetric positive definite, sparse (segments whose nodes' deltas overlap), solved by a
   // sparse LDL^T. The viscous tension is then mu_s (1/lambda) dlambda/dt of the motion the nodes
   // really make in the step: no assumed mobility, no lag. Needs mu_s > 0. Does not use or change
   // the state of set_node_velocity().
