@@ -13,6 +13,7 @@
 
 #include "solver/app/choice_option.hpp"
 #include "common/cli_support.hpp"
+#include "solver/common/atomic_write.hpp"
 #include "solver/rigid_sphere/rigid_circle.hpp"
 #include "solver/rigid_sphere/rigid_shell.hpp"
 
@@ -26,13 +27,11 @@ namespace {
 void write_result(const rigid_sphere::RigidShellResult& r, const std::string& series, const std::string& columns,
                   const std::string& values) {
   if (!series.empty()) {
-    const std::filesystem::path path(series), tmp(series + ".part");
-    {
+    replace_atomically(series, [&](const std::string& tmp) {
       std::ofstream out(tmp);
       rigid_sphere::write_series_csv(r, out);
-      if (!out) throw std::runtime_error("cannot write " + tmp.string());
-    }
-    std::filesystem::rename(tmp, path);
+      if (!out) throw std::runtime_error("cannot write " + tmp);
+    });
   }
   const auto& last = r.series.back();
   const rigid_sphere::RigidShellRow* before = &r.series.front();

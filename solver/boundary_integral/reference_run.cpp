@@ -1,5 +1,7 @@
 #include "solver/boundary_integral/reference_run.hpp"
 
+#include "solver/common/atomic_write.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -52,10 +54,9 @@ void run_reference(const ReferenceRunOptions& o, std::ostream& summary) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   if (!o.series_path.empty()) {
-    const std::filesystem::path path(o.series_path), tmp(o.series_path + ".part");
-    {
+    replace_atomically(o.series_path, [&](const std::string& tmp) {
       std::ofstream out(tmp);
-      if (!out) throw std::runtime_error("reference-bim: cannot write " + tmp.string());
+      if (!out) throw std::runtime_error("reference-bim: cannot write " + tmp);
       out << "kt,D,theta,L,W,extent_D,volume_change,area_change\n";
       char line[256];
       for (const auto& s : series) {
@@ -63,9 +64,8 @@ void run_reference(const ReferenceRunOptions& o, std::ostream& summary) {
                       s.extent_D, s.volume_change, s.area_change);
         out << line;
       }
-      if (!out) throw std::runtime_error("reference-bim: writing " + tmp.string() + " failed");
-    }
-    std::filesystem::rename(tmp, path);
+      if (!out) throw std::runtime_error("reference-bim: writing " + tmp + " failed");
+    });
   }
 
   const CapsuleShape& end = series.back();

@@ -2,7 +2,7 @@
 // The immersed boundary's mobility within one step: how the node velocity the IB interpolates
 // after a fluid step depends on the node forces spread into that step (Sec. 2.3 with the
 // forcing (22)). With the force density F_grid = S F spread by (21), the fluid's
-// u(n) = (j(n) + F_grid/2) / rho(n) (22, lbm/fluid.hpp "Time levels") and U = S^T u (19),
+// u(n) = (j(n) + F_grid/2) / rho(n) (22, solver/lbm/fluid.hpp, its time levels) and U = S^T u (19),
 //
 //   U = U_free + M F,   U_free,c = sum_x phi_c(x) j(x) / rho(x),
 //                       M_cd     = sum_x phi_c(x) phi_d(x) / (2 rho(x)),

@@ -18,6 +18,7 @@
 #include "solver/io/hdf5_dataset.hpp"
 #include "solver/io/hdf5_handle.hpp"
 #include "solver/io/quantities.hpp"
+#include "solver/common/atomic_write.hpp"
 #include "solver/io/write_guard.hpp"
 
 namespace capsule::io {
@@ -249,28 +250,10 @@ void MemberWriter::write(const std::string& path, const std::string& status) con
 }
 
 void MemberWriter::write_then_rename(const std::string& status, const std::string& to) const {
-  // Write beside, then rename: the file at `to` is always a whole one. A failed write (disk
-  // full, say) names errno's reason and leaves no temporary file behind.
-  const std::string tmp = own_temporary(partial_path());
-  require_ownership("write " + partial_path());
-  errno = 0;
-  try {
-    write(tmp, status);
-  } catch (const std::runtime_error& e) {
-    const int err = errno;
-    std::error_code ec;
-    std::filesystem::remove(tmp, ec);
-    if (err != 0) throw std::system_error(err, std::generic_category(), e.what());  // the cause stays a code
-    throw;
-  }
-  try {
-    require_ownership("rename over " + to);
-  } catch (const OwnershipLost&) {
-    std::error_code ec;
-    std::filesystem::remove(tmp, ec);  // its own temporary only
-    throw;
-  }
-  std::filesystem::rename(tmp, to);
+  // The file at `to` is always a whole one (solver/common/atomic_write.hpp).
+  require_ownership("write " + to);
+  replace_atomically(to, [&](const std::string& tmp) { write(tmp, status); },
+                     [&] { require_ownership("rename over " + to); });
 }
 
 void MemberWriter::checkpoint() { write_then_rename("running", partial_path()); }

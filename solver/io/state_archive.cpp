@@ -1,14 +1,12 @@
 #include "solver/io/state_archive.hpp"
 
-#include <cerrno>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <stdexcept>
-#include <system_error>
 
 #include "solver/io/hdf5_dataset.hpp"
 #include "solver/io/hdf5_handle.hpp"
+#include "solver/common/atomic_write.hpp"
 #include "solver/io/write_guard.hpp"
 
 namespace capsule::io {
@@ -93,10 +91,9 @@ std::size_t StateArchive::payload_bytes() const {
 
 void StateArchive::write(const std::string& path) const {
   silence_hdf5_errors();
-  const std::string tmp = own_temporary(path);
   require_ownership("write " + path);
-  errno = 0;
-  try {
+  const auto still_owner = [&] { require_ownership("rename over " + path); };
+  replace_atomically(path, [&](const std::string& tmp) {
     Hdf5Handle file = create_checked_file(tmp);
     if (!file.ok()) fail(tmp, "cannot create the restart point");
     write_array(file, kMagicName, std::vector<std::int64_t>{1}, H5T_NATIVE_INT64, H5T_STD_I64LE, tmp);
@@ -104,23 +101,7 @@ void StateArchive::write(const std::string& path) const {
     for (const auto& [name, v] : ints_) write_array(file, name, v, H5T_NATIVE_INT64, H5T_STD_I64LE, tmp);
     for (const auto& [name, t] : texts_) write_text(file, name, t, tmp);
     if (H5Fflush(file, H5F_SCOPE_GLOBAL) < 0) fail(tmp, "cannot flush");
-  } catch (const std::runtime_error& e) {
-    // Disk full, say: name errno's reason and leave no temporary file behind.
-    const int err = errno;
-    std::error_code ec;
-    std::filesystem::remove(tmp, ec);
-    if (err != 0) throw std::system_error(err, std::generic_category(), e.what());  // the cause stays a code
-    throw;
-  }
-  std::error_code ec;
-  try {
-    require_ownership("rename over " + path);
-  } catch (const OwnershipLost&) {
-    std::filesystem::remove(tmp, ec);  // its own temporary only
-    throw;
-  }
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) fail(path, "cannot rename " + tmp + ": " + ec.message());
+  }, still_owner);
 }
 
 StateArchive StateArchive::read(const std::string& path) {

@@ -5,7 +5,7 @@
 // are written as IEEE float64 and come back bit for bit (NaN included).
 //
 // Names are dotted ("fluid.populations", "protocol.kt"); each becomes one dataset at the
-// file's root. write() is atomic: the file is written under <path>.tmp and renamed.
+// file's root. write() is atomic (solver/common/atomic_write.hpp): written under a temporary name, renamed.
 #include <cstdint>
 #include <map>
 #include <string>

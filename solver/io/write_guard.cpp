@@ -1,7 +1,5 @@
 #include "solver/io/write_guard.hpp"
 
-#include <unistd.h>
-
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -37,7 +35,5 @@ void require_ownership(const std::string& what) {
   throw OwnershipLost{"the member's lock " + g_guard.lock_file + " now belongs to " + owner +
                       ": this run lost it (stopped longer than the lock's staleness?) and does not " + what};
 }
-
-std::string own_temporary(const std::string& path) { return path + ".tmp." + std::to_string(::getpid()); }
 
 }  // namespace capsule::io

@@ -23,7 +23,4 @@ void guard_writes_from_environment();
 // the write about to happen.
 void require_ownership(const std::string& what);
 
-// A temporary name beside `path` that no other process uses (<path>.tmp.<pid>).
-std::string own_temporary(const std::string& path);
-
 }  // namespace capsule::io

@@ -8,7 +8,8 @@
 
 namespace capsule::membrane2d {
 
-Membrane::Membrane(std::vector<double> xy, Moduli moduli) : n_(xy.size() / 2), xy_(std::move(xy)), moduli_(moduli) {
+Membrane::Membrane(std::vector<double> xy, Moduli moduli, ElasticLaw law)
+    : n_(xy.size() / 2), xy_(std::move(xy)), moduli_(moduli), law_(law) {
   if (n_ < 5) throw std::invalid_argument("Membrane: need at least 5 nodes");
   l_.assign(n_, 0.0);
   fit_geometry();
@@ -79,10 +80,12 @@ void Membrane::compute_forces(double dt, bool advance_history) {
       off_[i] = -m * (tx * sx + ty * sy);
     }
     solve_cyclic_tridiagonal_symmetric(off_, diag_, rx_, ry_, work_, z_);
-    for (std::size_t i = 0; i < n_; ++i) {
-      tau_v_[i] = rx_[i];
-      tau_[i] = moduli_.E_s * (lambda_[i] - 1.0) + tau_v_[i];  // (28), (30), (31)
-    }
+    visit_law(law_, moduli_.E_s, [&](const auto& law) {
+      for (std::size_t i = 0; i < n_; ++i) {
+        tau_v_[i] = rx_[i];
+        tau_[i] = law.tension(lambda_[i]) + tau_v_[i];  // (28), (30), (31)
+      }
+    });
     // the viscous node forces, for the next prediction
     for (std::size_t i = 0; i < n_; ++i) {
       const std::size_t j = (i + 1) % n_, k = (i + n_ - 1) % n_;
@@ -94,15 +97,17 @@ void Membrane::compute_forces(double dt, bool advance_history) {
   } else {
     // (31): d lambda / dt by the one-sided second-order difference (3 l - 4 l1 + l2) / (2 dt),
     // first order on the second step, zero on the first (the membrane starts at rest).
-    for (std::size_t i = 0; i < n_; ++i) {
-      double rate = 0.0;
-      if (history_ >= 2)
-        rate = (3.0 * lambda_[i] - 4.0 * lambda_prev1_[i] + lambda_prev2_[i]) / (2.0 * dt);
-      else if (history_ == 1)
-        rate = (lambda_[i] - lambda_prev1_[i]) / dt;
-      tau_[i] = moduli_.E_s * (lambda_[i] - 1.0) + moduli_.mu_s * rate / lambda_[i];  // (28), (30), (31)
-    }
-    for (std::size_t i = 0; i < n_; ++i) tau_v_[i] = tau_[i] - moduli_.E_s * (lambda_[i] - 1.0);
+    visit_law(law_, moduli_.E_s, [&](const auto& law) {
+      for (std::size_t i = 0; i < n_; ++i) {
+        double rate = 0.0;
+        if (history_ >= 2)
+          rate = (3.0 * lambda_[i] - 4.0 * lambda_prev1_[i] + lambda_prev2_[i]) / (2.0 * dt);
+        else if (history_ == 1)
+          rate = (lambda_[i] - lambda_prev1_[i]) / dt;
+        tau_[i] = law.tension(lambda_[i]) + moduli_.mu_s * rate / lambda_[i];  // (28), (30), (31)
+      }
+      for (std::size_t i = 0; i < n_; ++i) tau_v_[i] = tau_[i] - law.tension(lambda_[i]);
+    });
   }
   if (advance_history) {
     lambda_prev2_.swap(lambda_prev1_);
@@ -142,8 +147,10 @@ void Membrane::compute_forces_coupled(const std::vector<double>& U_free, const E
   if (!(moduli_.mu_s > 0.0)) throw std::invalid_argument("Membrane::compute_forces_coupled: needs mu_s > 0");
   fit_geometry();
   for (std::size_t i = 0; i < n_; ++i) lambda_[i] = l_[i] / l0_[i];  // (29)
-  // 1. The other forces (Hooke (30) and bending (32)) at the current shape: tau_v = 0.
-  for (std::size_t i = 0; i < n_; ++i) tau_[i] = moduli_.E_s * (lambda_[i] - 1.0);
+  // 1. The other forces (elastic (30) and bending (32)) at the current shape: tau_v = 0.
+  visit_law(law_, moduli_.E_s, [&](const auto& law) {
+    for (std::size_t i = 0; i < n_; ++i) tau_[i] = law.tension(lambda_[i]);
+  });
   assemble_forces();
   // 2. The velocity those forces alone would give, V = U_free + M F_other, and its strain rate.
   V_.assign(U_free.begin(), U_free.end());

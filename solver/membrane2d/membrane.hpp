@@ -1,7 +1,7 @@
 #pragma once
 // The 2D capsule membrane (Sec. 2.4): a closed chain of line segments with
 //   in-plane tension   tau = tau_e + tau_v                             (28)
-//     Hooke            tau_e = E_s (lambda - 1),  lambda = l / l0       (29)-(30)
+//     elastic          tau_e(lambda), lambda = l / l0: Hooke (29)-(30) (elastic_law.hpp)
 //     Kelvin-Voigt     tau_v = mu_s (1/lambda) d lambda / dt            (31)
 //                      (one-sided second-order backward difference in time), or, once
 //                      set_node_velocity() has been called, from the node velocities treated
@@ -23,6 +23,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "solver/membrane2d/elastic_law.hpp"
 #include "solver/membrane2d/periodic_spline.hpp"
 
 namespace capsule::membrane2d {
@@ -36,12 +37,13 @@ struct Moduli {
 class Membrane {
  public:
   // The given shape is the stress-free reference: l0 = its segment lengths, kappa0 = its curvature.
-  Membrane(std::vector<double> xy, Moduli moduli);
+  Membrane(std::vector<double> xy, Moduli moduli, ElasticLaw law = ElasticLaw::hooke);
 
   std::size_t size() const { return n_; }
   std::vector<double>& positions() { return xy_; }  // flat (x0, y0, x1, y1, ...)
   const std::vector<double>& positions() const { return xy_; }
   const Moduli& moduli() const { return moduli_; }
+  ElasticLaw law() const { return law_; }
 
   // Computes the forces the nodes exert on the fluid at the current positions. dt is the
   // time step for the viscous tension (31); advance_history = true (once per time step)
@@ -69,7 +71,7 @@ class Membrane {
   // F = F_other - D^T tau_v (F_other: Hooke and bending at the current shape) and
   // tau_v = W D U, W_i = mu_s / l_i, (D U)_i = t_i . (U_{i+1} - U_i):
   //   (diag(l_i / mu_s) + D M D^T) tau_v = D (U_free + M F_other),
-  // symmetric positive definite, sparse (segments whose nodes' kernels overlap), solved by a
+  // symmetric positive definite, sparse (segments whose nodes' deltas overlap), solved by a
   // sparse LDL^T. The viscous tension is then mu_s (1/lambda) dlambda/dt of the motion the nodes
   // really make in the step: no assumed mobility, no lag. Needs mu_s > 0. Does not use or change
   // the state of set_node_velocity().
@@ -110,6 +112,7 @@ class Membrane {
   std::size_t n_;
   std::vector<double> xy_;
   Moduli moduli_;
+  ElasticLaw law_;
   std::vector<double> l0_, kappa0_;
   PeriodicSpline spline_;
   std::vector<double> l_, lambda_, tau_, m_, q_, force_;

@@ -1,45 +1,46 @@
 #pragma once
-// Two-dimensional hyperelastic membrane laws (Sec. 2.5.2), written in the right
-// Cauchy-Green tensor C = F^T F of the in-plane deformation (2x2, reference frame) so that
-// no eigen-decomposition is needed: lambda_1^2 + lambda_2^2 = tr C, lambda_1^2 lambda_2^2 = det C.
-#include <Eigen/Core>
+// The 3D membrane's elastic law by name (the scene's `law`, `capsule reference-bim --law`) and
+// the one switch from that name to the law's formulas (laws/neo_hookean.hpp, laws/skalak.hpp,
+// each a HyperelasticLaw). A new law: its file in laws/, a name here, a case in visit_law.
+#include <stdexcept>
 #include <utility>
 
 #include "solver/common/name_table.hpp"
+#include "solver/membrane3d/laws/neo_hookean.hpp"
+#include "solver/membrane3d/laws/skalak.hpp"
 
 namespace capsule::membrane3d {
 
-using Mat2 = Eigen::Matrix2d;
-
 enum class ElasticLaw { neo_hookean, skalak };
-// The names of the scene's key `law` (3D) and of `capsule reference-bim --law`.
 inline constexpr NameTable<ElasticLaw, 2> elastic_law_names{{{ElasticLaw::neo_hookean, "neo-hookean"},
                                                              {ElasticLaw::skalak, "skalak"}}};
 constexpr const auto& name_table(ElasticLaw) { return elastic_law_names; }
 
-// The modulus the law's formulas take (Constitutive::E_s) for the E_s of Ca = mu k a / E_s (34)
-// (docs/conventions.md "Neo-Hookean modulus"): neo-Hookean E_s/3, the small-deformation shear
-// modulus G_s of Ramanujan and Pozrikidis' "surface modulus of elasticity" E_s; Skalak E_s as
-// printed.
-double law_modulus(ElasticLaw law, double E_s);
-
+// A law and its parameters.
 struct Constitutive {
   ElasticLaw law = ElasticLaw::neo_hookean;
-  double E_s = 1;  // shear modulus
+  double E_s = 1;  // the modulus the law's formulas take (law_modulus)
   double C = 15;   // Skalak area-dilation constant
 
-  // Energy per reference area.
-  //  neo-Hookean (56): W = E_s/2 (l1^2 + l2^2 + 1/(l1^2 l2^2) - 3)
-  //  Skalak: W = E_s/4 (I1^2 + 2 I1 - 2 I2 + C I2^2), I1 = l1^2 + l2^2 - 2, I2 = l1^2 l2^2 - 1.
-  //  (57) prints (l1 + l2 - 2) where I1 belongs: that misprint does not give the stresses (60)-(61),
-  //  the standard Skalak form does (checked in the tests).
+  // Energy per reference area, the second Piola-Kirchhoff tension S = 2 dW/dC and the principal
+  // Cauchy tensions of the law (one call each; a loop over elements calls visit_law once).
   double energy_density(const Mat2& C) const;
-  // Second Piola-Kirchhoff tension S = 2 dW/dC.
-  //  neo-Hookean: S = E_s (I - C^-1 / det C)
-  //  Skalak:      S = E_s [(I1 + 1) I + det C (C I2 - 1) C^-1]
   Mat2 second_piola_kirchhoff(const Mat2& C) const;
-  // Principal Cauchy tensions as printed: (58)-(59) neo-Hookean, (60)-(61) Skalak.
   std::pair<double, double> principal_cauchy(double lambda1, double lambda2) const;
 };
+
+// Calls f with the law's formulas (a NeoHookean or a Skalak): the one switch over the laws.
+template <class F>
+decltype(auto) visit_law(const Constitutive& k, F&& f) {
+  switch (k.law) {
+    case ElasticLaw::neo_hookean: return std::forward<F>(f)(NeoHookean{k.E_s});
+    case ElasticLaw::skalak: return std::forward<F>(f)(Skalak{k.E_s, k.C});
+  }
+  throw std::logic_error("membrane3d: an elastic law without formulas");
+}
+
+// The modulus the law's formulas take (Constitutive::E_s) for the E_s of Ca = mu k a / E_s (34)
+// (docs/conventions.md "Neo-Hookean modulus"): neo-Hookean E_s/3, Skalak E_s as printed.
+double law_modulus(ElasticLaw law, double E_s);
 
 }  // namespace capsule::membrane3d

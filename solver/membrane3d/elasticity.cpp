@@ -112,11 +112,13 @@ void ElasticMembrane::accumulate(const Mesh& cur, std::vector<Vec3>& force, Tens
 }
 
 void ElasticMembrane::add_elastic_forces(const Mesh& cur, std::vector<Vec3>& force) const {
-  if (maxwell_.E_m > 0 && memory_started_) {
-    accumulate(cur, force, [this](int t, const Mat2& C) { return Mat2(law_.second_piola_kirchhoff(C) + Q_[t]); });
-  } else {
-    accumulate(cur, force, [this](int, const Mat2& C) { return law_.second_piola_kirchhoff(C); });
-  }
+  visit_law(law_, [&](const auto& law) {
+    if (maxwell_.E_m > 0 && memory_started_) {
+      accumulate(cur, force, [&](int t, const Mat2& C) { return Mat2(law.second_piola_kirchhoff(C) + Q_[t]); });
+    } else {
+      accumulate(cur, force, [&](int, const Mat2& C) { return law.second_piola_kirchhoff(C); });
+    }
+  });
 }
 
 void ElasticMembrane::add_forces(const Mesh& cur, std::vector<Vec3>& force) {
@@ -128,17 +130,19 @@ void ElasticMembrane::add_forces(const Mesh& cur, std::vector<Vec3>& force) {
     add_power_law_forces(cur, force);
     return;
   }
-  Constitutive maxwell_law = law_;
-  maxwell_law.E_s = maxwell_.E_m;
   const double decay = std::exp(-maxwell_.dt / maxwell_.tau_m);
   const double gain = maxwell_.tau_m / maxwell_.dt * (1.0 - decay);
   const bool started = memory_started_;
-  accumulate(cur, force, [&](int t, const Mat2& C) {
-    const Mat2 Sm = maxwell_law.second_piola_kirchhoff(C);
-    // (67); on the first call the memory starts from the current state (no jump: Q = 0).
-    if (started) Q_[t] = decay * Q_[t] + gain * (Sm - Sm_previous_[t]);
-    Sm_previous_[t] = Sm;
-    return Mat2(law_.second_piola_kirchhoff(C) + Q_[t]);
+  visit_law(law_, [&](const auto& law) {
+    auto maxwell_law = law;  // the same law with E_s -> E_m
+    maxwell_law.E_s = maxwell_.E_m;
+    accumulate(cur, force, [&](int t, const Mat2& C) {
+      const Mat2 Sm = maxwell_law.second_piola_kirchhoff(C);
+      // (67); on the first call the memory starts from the current state (no jump: Q = 0).
+      if (started) Q_[t] = decay * Q_[t] + gain * (Sm - Sm_previous_[t]);
+      Sm_previous_[t] = Sm;
+      return Mat2(law.second_piola_kirchhoff(C) + Q_[t]);
+    });
   });
   memory_started_ = true;
 }
@@ -146,35 +150,39 @@ void ElasticMembrane::add_forces(const Mesh& cur, std::vector<Vec3>& force) {
 // The SLS step (67) with each triangle's relaxation time from its surface viscosity (102) at
 // its surface shear rate (101) over this step (elasticity.hpp, PowerLawRelaxation).
 void ElasticMembrane::add_power_law_forces(const Mesh& cur, std::vector<Vec3>& force) {
-  Constitutive maxwell_law = law_;
-  maxwell_law.E_s = maxwell_.E_m;
   const PowerLawRelaxation& pl = maxwell_.power_law;
   const double dt = maxwell_.dt;
   const bool started = memory_started_;
   gamma_.resize(cur.triangle_count());
-  accumulate(cur, force, [&](int t, const Mat2& C) {
-    const Mat2 Sm = maxwell_law.second_piola_kirchhoff(C);
-    if (started) {
-      const double gamma = surface_shear_rate(C_previous_[t], C, dt) / pl.shear_rate;  // (101), units of k
-      gamma_[t] = gamma;
-      const double tau = maxwell_.tau_m * std::pow(std::max(gamma, pl.gamma_floor), pl.n - 1.0);  // (102)
-      const double decay = std::exp(-dt / tau);
-      const double gain = tau / dt * (1.0 - decay);
-      Q_[t] = decay * Q_[t] + gain * (Sm - Sm_previous_[t]);  // (67)
-    } else {
-      gamma_[t] = 0.0;  // the memory starts from the current state, as in add_forces
-    }
-    Sm_previous_[t] = Sm;
-    C_previous_[t] = C;
-    return Mat2(law_.second_piola_kirchhoff(C) + Q_[t]);
+  visit_law(law_, [&](const auto& law) {
+    auto maxwell_law = law;  // the same law with E_s -> E_m
+    maxwell_law.E_s = maxwell_.E_m;
+    accumulate(cur, force, [&](int t, const Mat2& C) {
+      const Mat2 Sm = maxwell_law.second_piola_kirchhoff(C);
+      if (started) {
+        const double gamma = surface_shear_rate(C_previous_[t], C, dt) / pl.shear_rate;  // (101), units of k
+        gamma_[t] = gamma;
+        const double tau = maxwell_.tau_m * std::pow(std::max(gamma, pl.gamma_floor), pl.n - 1.0);  // (102)
+        const double decay = std::exp(-dt / tau);
+        const double gain = tau / dt * (1.0 - decay);
+        Q_[t] = decay * Q_[t] + gain * (Sm - Sm_previous_[t]);  // (67)
+      } else {
+        gamma_[t] = 0.0;  // the memory starts from the current state, as in add_forces
+      }
+      Sm_previous_[t] = Sm;
+      C_previous_[t] = C;
+      return Mat2(law.second_piola_kirchhoff(C) + Q_[t]);
+    });
   });
   memory_started_ = true;
 }
 
 double ElasticMembrane::energy(const Mesh& cur) const {
-  double e = 0;
-  for (int t = 0; t < cur.triangle_count(); ++t) e += area0_[t] * law_.energy_density(cauchy_green(cur, t));
-  return e;
+  return visit_law(law_, [&](const auto& law) {
+    double e = 0;
+    for (int t = 0; t < cur.triangle_count(); ++t) e += area0_[t] * law.energy_density(cauchy_green(cur, t));
+    return e;
+  });
 }
 
 }  // namespace capsule::membrane3d

@@ -1,5 +1,7 @@
 #include "solver/membrane3d/vtk_writer.hpp"
 
+#include "solver/common/atomic_write.hpp"
+
 #include <zlib.h>
 
 #include <algorithm>
@@ -74,20 +76,12 @@ void write_indices(std::ostream& f, AppendedData& data, const char* name, const 
   f << "        <DataArray type=\"Int64\" Name=\"" << name << "\" format=\"appended\" offset=\"" << offset << "\"/>\n";
 }
 
-void rename_into_place(const std::string& tmp, const std::string& path) {
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot rename " + tmp + " to " + path);
-  }
-}
-
 }  // namespace
 
 void write_vtp(const std::string& path, const Mesh& m, const std::vector<VtkField>& point_fields,
                const std::vector<VtkField>& cell_fields, const VtkFrame& frame) {
   static_assert(std::endian::native == std::endian::little, "the snapshot writer declares LittleEndian");
-  const std::string tmp = path + ".tmp";
-  try {
+  replace_atomically(path, [&](const std::string& tmp) {
     std::ofstream f(tmp, std::ios::binary);
     if (!f) throw std::runtime_error("cannot write " + tmp);
     AppendedData data;
@@ -116,16 +110,11 @@ void write_vtp(const std::string& path, const Mesh& m, const std::vector<VtkFiel
     f.write(data.bytes().data(), static_cast<std::streamsize>(data.bytes().size()));
     f << "\n  </AppendedData>\n</VTKFile>\n";
     if (!f) throw std::runtime_error("write failed: " + tmp);
-  } catch (...) {
-    std::remove(tmp.c_str());  // nothing half-written stays behind
-    throw;
-  }
-  rename_into_place(tmp, path);
+  });
 }
 
 void write_pvd(const std::string& path, const std::vector<std::pair<double, std::string>>& snapshots) {
-  const std::string tmp = path + ".tmp";
-  {
+  replace_atomically(path, [&](const std::string& tmp) {
     std::ofstream f(tmp);
     if (!f) throw std::runtime_error("cannot write " + tmp);
     f.precision(10);
@@ -134,12 +123,8 @@ void write_pvd(const std::string& path, const std::vector<std::pair<double, std:
     for (const auto& [kt, file] : snapshots)
       f << "    <DataSet timestep=\"" << kt << "\" group=\"\" part=\"0\" file=\"" << xml_attribute(file) << "\"/>\n";
     f << "  </Collection>\n</VTKFile>\n";
-    if (!f) {
-      std::remove(tmp.c_str());
-      throw std::runtime_error("write failed: " + tmp);
-    }
-  }
-  rename_into_place(tmp, path);
+    if (!f) throw std::runtime_error("write failed: " + tmp);
+  });
 }
 
 }  // namespace capsule::membrane3d

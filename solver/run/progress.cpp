@@ -6,11 +6,11 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
-#include <filesystem>
-#include <fstream>
+#include <stdexcept>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "solver/common/atomic_write.hpp"
 #include "solver/io/write_guard.hpp"
 #include "solver/run/checkpoint.hpp"
 
@@ -39,18 +39,10 @@ std::string host() {
 namespace {
 void write_json_atomically(const std::string& file, const nlohmann::json& j) {
   io::require_ownership("write " + file);
-  const std::string tmp = io::own_temporary(file);
-  {
-    std::ofstream out(tmp, std::ios::trunc);
-    out << j.dump() << "\n";
-    if (!out) {  // progress is best effort: a full disk must not end the member
-      std::error_code ec;
-      std::filesystem::remove(tmp, ec);
-      return;
-    }
+  try {
+    write_file_atomically(file, j.dump() + "\n", [&] { io::require_ownership("rename over " + file); });
+  } catch (const std::runtime_error&) {  // progress is best effort: a full disk must not end the member
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, file, ec);
 }
 }  // namespace
 

@@ -24,8 +24,8 @@ namespace capsule {
 
 
 namespace {
-// Peskin's 4-point kernel, not the cosine kernel (18): see solver/ib/delta.hpp for the measurement.
-constexpr ib::Delta kKernel = ib::Delta::peskin4;
+// Peskin's 4-point delta, not the cosine delta (18): see solver/ib/delta.hpp for the measurement.
+constexpr ib::Delta kDelta = ib::Delta::peskin4;
 using Clock = std::chrono::steady_clock;
 // Mobility of the implicit Kelvin-Voigt prediction (Membrane::set_node_velocity). A node force F
 // reaches its own interpolated velocity over two steps: (3/8)^2 F / 2 = 0.0703 F in its own step
@@ -66,7 +66,7 @@ struct Simulation2D::Impl {
     const double r_eq = scale * (s.biconcave_2d == BiconcaveSize2d::dissertation ? s.a * membrane2d::biconcave_equivalent_radius() : s.a);
     auto xy = s.shape == Shape::biconcave ? membrane2d::biconcave(s.segments, r_eq, cx, cy, incline)
                                      : membrane2d::circle(s.segments, scale * s.a, cx, cy, incline);
-    return membrane2d::Membrane(std::move(xy), {u.E_s, membrane_bending_modulus(s, u), u.mu_s});
+    return membrane2d::Membrane(std::move(xy), {u.E_s, membrane_bending_modulus(s, u), u.mu_s}, elastic_law_2d(s.law));
   }
 
   Impl(const Scene& s, const Units& u, const std::vector<int>& n)
@@ -133,7 +133,7 @@ void Simulation2D::step(double shear_factor) {
   if (s.units.mu_s > 0.0 && s.exact_kv) {
     // Kelvin-Voigt (31) with the velocities this step will really give the nodes, U = U_free + M F
     // (solver/ib/mobility.hpp, Membrane::compute_forces_coupled).
-    s.mobility.assemble(s.grid, s.membrane.positions().data(), n, kKernel,
+    s.mobility.assemble(s.grid, s.membrane.positions().data(), n, kDelta,
                         [&](std::size_t node) { return s.fluid.moments(node); });
     s.membrane.compute_forces_coupled(s.mobility.free_velocity(), s.mobility.matrix());
   } else {
@@ -145,16 +145,16 @@ void Simulation2D::step(double shear_factor) {
   double* p[2] = {s.fluid.force(0), s.fluid.force(1)};
   // the force field is zero except where the last step spread: clear only there
   if (s.spread_from.empty()) s.fluid.clear_force();
-  else ib::clear_support<2>(s.grid, s.spread_from.data(), n, p, kKernel);
+  else ib::clear_support<2>(s.grid, s.spread_from.data(), n, p, kDelta);
   s.spread_from = s.membrane.positions();
-  ib::spread<2>(s.grid, s.membrane.positions().data(), s.membrane.forces().data(), n, p, kKernel);  // (21)
+  ib::spread<2>(s.grid, s.membrane.positions().data(), s.membrane.forces().data(), n, p, kDelta);  // (21)
   const double wall = 0.5 * s.units.shear_rate * s.grid.ny * shear_factor;             // k H / 2 (1)
   s.fluid.set_wall_velocity(-wall, wall);
   auto t1 = Clock::now();
   s.fluid.step();
   auto t2 = Clock::now();
   const double* u[2] = {s.fluid.velocity(0), s.fluid.velocity(1)};
-  ib::interpolate<2>(s.grid, u, s.membrane.positions().data(), n, s.U.data(), kKernel);  // (19)
+  ib::interpolate<2>(s.grid, u, s.membrane.positions().data(), n, s.U.data(), kDelta);  // (19)
   ib::advance<2>(s.membrane.positions().data(), s.U.data(), n, 1.0);            // (20)
   // Never index the lattice with a node that is NaN or outside the channel (a blow-up between
   // two outputs): stop moving and let health() end the member.

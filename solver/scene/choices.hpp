@@ -99,7 +99,7 @@ struct SceneDefaults {
   lbm::Precision precision;
   PowerLawModel power_law_model;
   KelvinVoigtStep kelvin_voigt_step;
-  MarkerInsetRule marker_inset_rule;  // before a kernel without a measured inset turns it off
+  MarkerInsetRule marker_inset_rule;  // before a delta without a measured inset turns it off
   std::vector<double> domain;         // in units of a
 };
 

@@ -55,7 +55,7 @@ double choose_tau_2d(const Scene& scene) {
 //    Ca = 0.05). The 2D bounds (S 0.04, B 0.12) do not carry over: 3D ran stably at 4 x S.
 //  - the Maxwell element (eta > 0, or the power law in the membrane): its stiffness E_m = G G_s
 //    acts at once (tau_m is 10-60 steps), 50 times the elastic one at G = 50, and with Roma's
-//    kernel (the version 6 default, whose self-mobility is 2.4 times Peskin's) the explicit
+//    delta (the version 6 default, whose self-mobility is 2.4 times Peskin's) the explicit
 //    coupling blows up when M = maxwell_stiffness_number is large, the sooner the finer the
 //    membrane mesh. eta = 10, G = 50 (the dissertation's reading), Ca 0.05: level 3 blew up at
 //    M = 1.32 and 1.07 (a = 4 and 5, tau 1.5) and ran at 0.8 to steady; a = 5, level 4 blew up
@@ -63,7 +63,7 @@ double choose_tau_2d(const Scene& scene) {
 //    (docs/guide/model.md "Relaxation time"). That bound, 0.4, holds under shear but not at rest:
 //    a long recovery grows a slow mode (+0.41 per kt at M 0.4, a = 5, level 3; +0.59 at level 4;
 //    +0.07 at M 0.22) until the membrane folds after 20-35 kt, while M 0.20 and 0.15 decay and
-//    0.15 decays at levels 3-5, at a = 7 and over a 50 kt recovery; Peskin's kernel decays at
+//    0.15 decays at levels 3-5, at a = 7 and over a 50 kt recovery; Peskin's delta decays at
 //    0.4 (levels 3 and 4). docs/findings/accuracy_and_stability.md "A slow instability at rest".
 //    So M_max = 0.4 for peskin4 and 0.15 for the other deltas (roma3 measured; linear2 and
 //    cosine not, so they take the stricter bound).
@@ -95,6 +95,15 @@ membrane3d::ElasticLaw elastic_law_3d(MembraneLaw law) {
     case MembraneLaw::hooke: break;
   }
   throw std::invalid_argument("the law hooke is the 2D membrane's, not a 3D one");
+}
+
+membrane2d::ElasticLaw elastic_law_2d(MembraneLaw law) {
+  switch (law) {
+    case MembraneLaw::hooke: return membrane2d::ElasticLaw::hooke;
+    case MembraneLaw::neo_hookean:
+    case MembraneLaw::skalak: break;
+  }
+  throw std::invalid_argument("the law " + choice_name(law) + " is a 3D membrane's, not a 2D one");
 }
 
 double shear_modulus_3d(const Scene& s, const Units& u) {

@@ -1,5 +1,6 @@
 #pragma once
 // From dimensionless groups to lattice units (dx = dt = rho = 1), CONTRACTS.md.
+#include "solver/membrane2d/elastic_law.hpp"
 #include "solver/membrane3d/constitutive_law.hpp"
 #include "solver/scene/scene.hpp"
 
@@ -40,6 +41,8 @@ double shear_modulus_3d(const Scene& scene, const Units& units);
 
 // The 3D membrane's law of a 3D scene's law; std::invalid_argument for the 2D law hooke.
 membrane3d::ElasticLaw elastic_law_3d(MembraneLaw law);
+// The 2D membrane's law of a 2D scene's law; std::invalid_argument for a 3D law.
+membrane2d::ElasticLaw elastic_law_2d(MembraneLaw law);
 
 // The Maxwell element of a 3D membrane in lattice units: the standard linear solid (63)-(67)
 // when eta > 0, or the power law in the membrane (power_law.model "membrane"; the scene refuses

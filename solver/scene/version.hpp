@@ -7,7 +7,7 @@ namespace capsule {
 // 4: "settled" recovery window grows with the time since the stop (window_fraction); scene
 //    conventions (sls_viscosity, E_b_2d).
 // 5: 3D relaxation-time rule tau = 1.5 (was 1), bounded by the measured stable S and B.
-// 6: 3D: roma3 kernel with the stresslet's marker inset (the smeared shell's hydrodynamic radius
+// 6: 3D: roma3 delta with the stresslet's marker inset (the smeared shell's hydrodynamic radius
 //    removed), TRT collision (Lambda = 3/16), the power law in the membrane; 2D: the exact
 //    Kelvin-Voigt step. Canonical scenes write every key.
 inline constexpr const char* physics_version = "6";

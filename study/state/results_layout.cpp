@@ -3,11 +3,6 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
 
 namespace capsule::study {
 
@@ -62,37 +57,6 @@ std::string read_file_text(const fs::path& path) {
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
-}
-
-void write_file_atomically(const fs::path& path, const std::string& text) {
-  const fs::path temporary = path.string() + ".tmp." + std::to_string(::getpid());
-  // POSIX calls, so a failure names errno's reason (disk full, read-only, no permission) and
-  // the temporary file never stays behind.
-  const auto failed = [&](const char* what) {
-    const int err = errno;
-    ::unlink(temporary.c_str());
-    throw std::runtime_error("cannot write " + path.string() + " (" + what + " " + temporary.filename().string() +
-                             "): " + std::strerror(err));
-  };
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) {
-    const int err = errno;
-    throw std::runtime_error("cannot write " + path.string() + " (creating " + temporary.filename().string() +
-                             "): " + std::strerror(err));
-  }
-  for (std::size_t done = 0; done < text.size();) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) {
-      const int err = errno;
-      ::close(fd);
-      errno = err;
-      failed("writing");
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  if (::close(fd) != 0) failed("closing");
-  if (::rename(temporary.c_str(), path.c_str()) != 0) failed("renaming");
 }
 
 }  // namespace capsule::study

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <string>
 
+#include "solver/common/atomic_write.hpp"
 #include "study/campaign/expansion.hpp"
 
 namespace capsule::study {
@@ -57,8 +58,8 @@ std::string linked_member_folder(const std::filesystem::path& member_dir);
 // Throws std::runtime_error naming the link when <root>/members is a symbolic link.
 void require_no_linked_members_folder(const ResultsLayout& layout);
 
-// Writes text to path atomically (temporary file in the same folder, then rename).
-void write_file_atomically(const std::filesystem::path& path, const std::string& text);
+// Writes text to path atomically (solver/common/atomic_write.hpp).
+using capsule::write_file_atomically;
 // The whole file as text; "" when it does not exist or cannot be read.
 std::string read_file_text(const std::filesystem::path& path);
 

@@ -9,7 +9,7 @@
 
 #include "solver/io/member_file.hpp"
 #include "solver/io/state_archive.hpp"
-#include "solver/io/write_guard.hpp"
+#include "solver/common/atomic_write.hpp"
 
 namespace fs = std::filesystem;
 using capsule::io::StateArchive;
@@ -39,7 +39,7 @@ TEST_CASE("a restart point keeps doubles bit for bit, integers and texts exactly
   a.put_number("loop.D_xy", nan);
   a.put_integer("sim.steps", 123456789012L);
   a.write(path.string());
-  CHECK(!fs::exists(capsule::io::own_temporary(path.string())));  // renamed into place, nothing left behind
+  CHECK(!fs::exists(capsule::temporary_path(path.string())));  // renamed into place, nothing left behind
 
   StateArchive b = StateArchive::read(path.string());
   CHECK(same_bits(b.doubles("fluid.populations"), values));

@@ -12,6 +12,7 @@
 #include <numbers>
 #include <string>
 
+#include "solver/common/atomic_write.hpp"
 #include "solver/membrane3d/phase_angles.hpp"
 #include "solver/membrane3d/shape_measures.hpp"
 #include "solver/membrane3d/shapes.hpp"
@@ -133,7 +134,7 @@ TEST_CASE("VTK XML snapshot holds the mesh and its fields; a field of the wrong 
   }
   CHECK_THROWS(write_vtp(path, m, {{"k", 1, {1.0}}}, {}));
   CHECK_FALSE(std::ifstream(path).good());
-  CHECK_FALSE(std::ifstream(path + ".tmp").good());  // nothing left behind
+  CHECK_FALSE(std::ifstream(capsule::temporary_path(path)).good());  // nothing left behind
   write_pvd("membrane3d_test.pvd", {{0.0, "a&b.vtp"}});
   std::ifstream pvd("membrane3d_test.pvd");
   std::string text((std::istreambuf_iterator<char>(pvd)), std::istreambuf_iterator<char>());
