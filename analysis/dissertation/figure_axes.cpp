@@ -70,16 +70,7 @@ std::vector<std::string> TextFigureAxes::toolkit_right() const {
 
 std::vector<TextFigureAxes> parse_figure_axes(const std::string& markdown) {
   std::vector<TextFigureAxes> out;
-  std::istringstream in(markdown);
-  std::string line;
-  int line_number = 0;
-  bool header_seen = false, separator_seen = false;
-  while (std::getline(in, line)) {
-    ++line_number;
-    if (line.rfind("|", 0) != 0) continue;
-    if (!header_seen) { header_seen = true; continue; }
-    if (!separator_seen) { separator_seen = true; continue; }
-    const auto cells = markdown_row_cells(line);
+  for (const auto& [line_number, cells] : markdown_table_rows(markdown)) {
     const std::string where = "analysis/dissertation/figure_axes.md line " + std::to_string(line_number) + ": ";
     if (cells.size() != 6) throw std::runtime_error(where + "expected 6 cells, found " + std::to_string(cells.size()));
     if (cells[0].empty() || cells[1].empty() || cells[2].empty())

@@ -27,6 +27,22 @@ std::vector<std::string> markdown_row_cells(const std::string& line) {
   return cells;
 }
 
+std::vector<MarkdownRow> markdown_table_rows(const std::string& markdown) {
+  std::vector<MarkdownRow> rows;
+  std::istringstream in(markdown);
+  std::string line;
+  int line_number = 0;
+  bool header_seen = false, separator_seen = false;
+  while (std::getline(in, line)) {
+    ++line_number;
+    if (line.rfind("|", 0) != 0) continue;
+    if (!header_seen) { header_seen = true; continue; }
+    if (!separator_seen) { separator_seen = true; continue; }
+    rows.push_back({line_number, markdown_row_cells(line)});
+  }
+  return rows;
+}
+
 namespace {
 
 bool shipped(const std::string& results_dir, const std::string& file) {
@@ -38,16 +54,7 @@ bool shipped(const std::string& results_dir, const std::string& file) {
 
 std::vector<TextFigure> parse_figure_index(const std::string& markdown) {
   std::vector<TextFigure> out;
-  std::istringstream in(markdown);
-  std::string line;
-  int line_number = 0;
-  bool header_seen = false, separator_seen = false;
-  while (std::getline(in, line)) {
-    ++line_number;
-    if (line.rfind("|", 0) != 0) continue;
-    if (!header_seen) { header_seen = true; continue; }
-    if (!separator_seen) { separator_seen = true; continue; }
-    const auto cells = markdown_row_cells(line);
+  for (const auto& [line_number, cells] : markdown_table_rows(markdown)) {
     const std::string where = "analysis/dissertation/figures.md line " + std::to_string(line_number) + ": ";
     if (cells.size() != 4) throw std::runtime_error(where + "expected 4 cells, found " + std::to_string(cells.size()));
     if (cells[0].empty()) throw std::runtime_error(where + "a row without a figure number");

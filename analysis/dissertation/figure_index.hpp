@@ -18,6 +18,14 @@ struct TextFigure {
 // The cells of a Markdown table row "| a | b |", blanks around each trimmed.
 std::vector<std::string> markdown_row_cells(const std::string& line);
 
+// The body rows of a Markdown text's table: every "|" line below the header and its |---|
+// line, with its line number in the text (for messages).
+struct MarkdownRow {
+  int line_number = 0;
+  std::vector<std::string> cells;
+};
+std::vector<MarkdownRow> markdown_table_rows(const std::string& markdown);
+
 // The rows of a figures.md text: every table row below the header and its |---| line, four
 // cells (figure, shows, files, claims; lists separated by ';'). Throws std::runtime_error naming
 // the line for a row with another number of cells or without a figure number.

@@ -22,17 +22,9 @@ TEST_CASE("the run lock held by members a killed GNU Parallel left: the next run
   const fs::path dir = testing::scratch_dir("orphaned_members");
   // One member of about 10 s (kt 40 at about 0.25 s per kt): long enough to be caught running.
   testing::write_text(dir / "c.json", testing::tiny_campaign("orphans", {0.05}, 40, 0.1).dump(2));
-  const pid_t child = ::fork();
-  REQUIRE(child >= 0);
-  if (child == 0) {
-    ::setsid();
-    ::chdir(dir.c_str());
-    ::setenv("CAPSULE_BIN", testing::capsule_binary().c_str(), 1);
-    const std::string study = testing::study_binary().string();
-    std::freopen("/dev/null", "w", stdout);
-    ::execl(study.c_str(), study.c_str(), "run", "c.json", static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
+  // Its own session, so the test can kill exactly this run's process tree.
+  const pid_t child = testing::start_study_run(dir);
+  REQUIRE(child > 0);
   const fs::path campaign = dir / "results" / "orphans";
   // Running: GNU Parallel's pid recorded and the member's capsule writing its progress.
   long parallel_pid = 0;

@@ -56,17 +56,9 @@ TEST_CASE("a run killed with SIGKILL resumes: only incomplete members rerun", "[
   // Four members of ~1.5 s each (kt 3 + 2 at about 0.25 s per kt), two at a time.
   testing::write_text(dir / "c.json", testing::tiny_campaign("resume", {0.01, 0.02, 0.03, 0.04}, 3, 2).dump(2));
 
-  const pid_t child = ::fork();
-  REQUIRE(child >= 0);
-  if (child == 0) {
-    ::setsid();  // its own session, so the test can kill exactly this run's process tree
-    ::chdir(dir.c_str());
-    ::setenv("CAPSULE_BIN", testing::capsule_binary().c_str(), 1);
-    const std::string study = testing::study_binary().string();
-    std::freopen("/dev/null", "w", stdout);
-    ::execl(study.c_str(), study.c_str(), "run", "c.json", "--jobs", "2", static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
+  // Its own session, so the test can kill exactly this run's process tree.
+  const pid_t child = testing::start_study_run(dir, {"--jobs", "2"});
+  REQUIRE(child > 0);
 
   const CampaignSurvey before = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   // Wait until at least one member is complete and another is mid-run (its .partial exists),
@@ -124,17 +116,9 @@ TEST_CASE("after kill -9 of study, the next run says the run is still going, wit
   const fs::path dir = testing::scratch_dir("still_going");
   // One member of about 7 s (kt 20 + 8): still running when study is killed.
   testing::write_text(dir / "c.json", testing::tiny_campaign("still_going", {0.05}, 20, 8).dump(2));
-  const pid_t child = ::fork();
-  REQUIRE(child >= 0);
-  if (child == 0) {
-    ::setsid();
-    ::chdir(dir.c_str());
-    ::setenv("CAPSULE_BIN", testing::capsule_binary().c_str(), 1);
-    const std::string study = testing::study_binary().string();
-    std::freopen("/dev/null", "w", stdout);
-    ::execl(study.c_str(), study.c_str(), "run", "c.json", static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
+  // Its own session, so the test can kill exactly this run's process tree.
+  const pid_t child = testing::start_study_run(dir);
+  REQUIRE(child > 0);
   const CampaignSurvey before = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);
   const MemberPaths p = before.layout.member(before.members[0]);
   bool running = false;

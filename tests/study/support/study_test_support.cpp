@@ -97,4 +97,23 @@ void set_age(const std::filesystem::path& file, double seconds) {
       file, std::filesystem::file_time_type::clock::now() - std::chrono::seconds(static_cast<long>(seconds)));
 }
 
+pid_t start_study_run(const std::filesystem::path& cwd, const std::vector<std::string>& extra) {
+  std::vector<std::string> args{study_binary().string(), "run", "c.json"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const std::string capsule = capsule_binary().string();
+  const pid_t child = ::fork();
+  if (child == 0) {
+    ::setsid();
+    if (::chdir(cwd.c_str()) != 0) ::_exit(127);
+    ::setenv("CAPSULE_BIN", capsule.c_str(), 1);
+    if (!std::freopen("/dev/null", "w", stdout)) ::_exit(127);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  return child;
+}
+
 }  // namespace capsule::study::testing

@@ -2,6 +2,7 @@
 // Helpers for the study tests: scratch folders, running the real `study` binary, tiny
 // scenes that the real `capsule` runs in about a second.
 #include <filesystem>
+#include <sys/types.h>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -26,6 +27,10 @@ struct CommandResult {
 // Runs `study ARGS...` in folder cwd with CAPSULE_BIN pointing at capsule_binary(); no shell
 // sees the arguments unquoted.
 CommandResult run_study(const std::vector<std::string>& args, const std::filesystem::path& cwd);
+
+// Starts `study run c.json EXTRA...` in folder cwd as a child in a session of its own (so a test
+// can kill exactly that run's process tree), stdout to /dev/null; returns its pid.
+pid_t start_study_run(const std::filesystem::path& cwd, const std::vector<std::string>& extra = {});
 
 // Runs a shell command line (tests only build it from quoted parts).
 CommandResult run_shell(const std::string& command_line);
