@@ -10,6 +10,7 @@
 #include "analysis/dissertation/claims.hpp"
 #include "analysis/dissertation/claims/registry.hpp"
 #include "analysis/dissertation/results.hpp"
+#include "tests/analysis/dissertation/claims_md_keys.hpp"
 
 using namespace capsule::analysis;
 
@@ -20,18 +21,11 @@ std::vector<std::string> registered_keys() {
   return keys;
 }
 
-std::vector<std::string> worded_keys() {
-  std::ifstream in(std::string(CAPSULE_SOURCE_DIR) + "/analysis/dissertation/claims.md");
-  std::vector<std::string> keys;
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind("## ", 0) == 0) keys.push_back(line.substr(3));
-  return keys;
-}
 }  // namespace
 
 TEST_CASE("claim registry: every registered claim has words in claims.md and every worded claim a rule", "[analysis][dissertation]") {
   const auto registered = registered_keys();
-  const auto worded = worded_keys();
+  const auto worded = capsule::analysis::testing::claims_md_keys();
   REQUIRE_FALSE(worded.empty());
   for (const auto& m : claims::registry_mismatches(registered, worded)) FAIL_CHECK(m);
   CHECK(registered.size() == worded.size());
@@ -56,7 +50,7 @@ TEST_CASE("claim registry: evaluate_claims gives every claim's rows, in the orde
   std::vector<std::string> keys;  // the rows' keys, each once, in order
   for (const auto& r : rows)
     if (keys.empty() || keys.back() != r.key) keys.push_back(r.key);
-  CHECK(keys == worded_keys());
+  CHECK(keys == capsule::analysis::testing::claims_md_keys());
   std::size_t expected_rows = 0;
   for (const auto& c : claims::claim_registry()) expected_rows += c.rows.size();
   CHECK(rows.size() == expected_rows);

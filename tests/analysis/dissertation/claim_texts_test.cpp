@@ -11,21 +11,12 @@
 #include "analysis/dissertation/claim_texts.hpp"
 #include "analysis/dissertation/claims.hpp"
 #include "analysis/dissertation/results.hpp"
+#include "tests/analysis/dissertation/claims_md_keys.hpp"
 
 using namespace capsule::analysis;
 
-namespace {
-std::vector<std::string> headings_of_claims_md() {
-  std::ifstream in(std::string(CAPSULE_SOURCE_DIR) + "/analysis/dissertation/claims.md");
-  std::vector<std::string> keys;
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind("## ", 0) == 0) keys.push_back(line.substr(3));
-  return keys;
-}
-}  // namespace
-
 TEST_CASE("every claim in claims.md has a section, a statement, what tests it and a criterion", "[analysis][dissertation]") {
-  const auto keys = headings_of_claims_md();
+  const auto keys = capsule::analysis::testing::claims_md_keys();
   REQUIRE(keys.size() == claim_texts().size());  // the embedded copy is the file's (claim_registry_test.cpp: each has a rule)
   for (const auto& key : keys) {
     INFO(key);
@@ -81,7 +72,7 @@ TEST_CASE("every claim of claims.md is judged, with every placeholder filled", "
   }
   // And the code judges every claim of the file: each key's statement (up to its first
   // placeholder) and criterion (likewise) open some judged claim of its section.
-  for (const auto& key : headings_of_claims_md()) {
+  for (const auto& key : capsule::analysis::testing::claims_md_keys()) {
     INFO(key);
     const ClaimText& t = claim_text(key);
     const std::string statement = t.statement.substr(0, t.statement.find('{'));

@@ -46,6 +46,19 @@ std::string cannot_run_as_nobody(const fs::path& dir) {
   return "";
 }
 
+// Opens dir to everyone's reading; when commands cannot run as nobody here, says why, removes
+// dir and returns true (the test is skipped).
+bool skipped_unless_nobody_can_run(const fs::path& dir) {
+  fs::permissions(dir, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec | fs::perms::others_read |
+                           fs::perms::others_exec);
+  const std::string why = cannot_run_as_nobody(dir);
+  if (why.empty()) return false;
+  std::cout << "skipped (" << why << ")\n";
+  WARN("skipped: " << why);
+  fs::remove_all(dir);
+  return true;
+}
+
 void give_to_nobody(const fs::path& dir) {
   REQUIRE(testing::run_shell("chown -R " + std::string(kNobody) + ":" + kNobody + " " + shell_quote(dir.string())).exit_code == 0);
 }
@@ -54,14 +67,7 @@ void give_to_nobody(const fs::path& dir) {
 
 TEST_CASE("a member folder nobody may read: report --partial goes on without it, run names it", "[study]") {
   const fs::path dir = testing::scratch_dir("unprivileged_member");
-  fs::permissions(dir, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec | fs::perms::others_read |
-                           fs::perms::others_exec);
-  if (const std::string why = cannot_run_as_nobody(dir); !why.empty()) {
-    std::cout << "skipped (" << why << ")\n";
-    WARN("skipped: " << why);
-    fs::remove_all(dir);
-    return;
-  }
+  if (skipped_unless_nobody_can_run(dir)) return;
   testing::write_text(dir / "c.json", testing::tiny_campaign("locked", {0.04, 0.05}, 0.3, 0.2).dump(2));
   REQUIRE(testing::run_study({"run", "c.json"}, dir).exit_code == 0);
   give_to_nobody(dir);
@@ -89,14 +95,7 @@ TEST_CASE("a member folder nobody may read: report --partial goes on without it,
 
 TEST_CASE("a results folder nobody may write: run names it and the OS reason", "[study]") {
   const fs::path dir = testing::scratch_dir("unprivileged_results");
-  fs::permissions(dir, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec | fs::perms::others_read |
-                           fs::perms::others_exec);
-  if (const std::string why = cannot_run_as_nobody(dir); !why.empty()) {
-    std::cout << "skipped (" << why << ")\n";
-    WARN("skipped: " << why);
-    fs::remove_all(dir);
-    return;
-  }
+  if (skipped_unless_nobody_can_run(dir)) return;
   testing::write_text(dir / "c.json", testing::tiny_campaign("closed", {0.05}, 0.3, 0.2).dump(2));
   fs::create_directories(dir / "results");  // root's, read-only to nobody
   const auto run = testing::run_shell(as_nobody(dir, testing::study_binary().string(), {"run", "c.json"}));
