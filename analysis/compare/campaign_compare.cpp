@@ -1,3 +1,4 @@
+#include "solver/common/atomic_write.hpp"
 #include "analysis/compare/campaign_compare.hpp"
 
 #include <algorithm>
@@ -158,8 +159,8 @@ int compare_campaigns(const std::vector<CompareEntry>& entries, std::ostream& ou
     md += section;
     out << section;
   }
-  std::ofstream(fs::path(out_dir) / "compare.md") << md;
-  std::ofstream(fs::path(out_dir) / "compare.csv") << csv;
+  capsule::write_file_atomically(fs::path(out_dir) / "compare.md", md);
+  capsule::write_file_atomically(fs::path(out_dir) / "compare.csv", csv);
   return status;
 }
 

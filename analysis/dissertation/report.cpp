@@ -1,3 +1,4 @@
+#include "solver/common/atomic_write.hpp"
 #include "analysis/dissertation/report.hpp"
 
 #include "analysis/dissertation/prose_lines.hpp"
@@ -246,30 +247,6 @@ std::string dissertation_markdown(const DissertationResults& results, const std:
   return wrap_prose_lines(md);
 }
 
-namespace {
-
-// Writes text to path under a temporary name renamed when done; a failure names the OS reason.
-void write_with_reason(const fs::path& path, const std::string& text) {
-  const fs::path temporary = path.string() + ".tmp." + std::to_string(::getpid());
-  std::error_code ec;
-  const auto fail = [&](int err) {
-    fs::remove(temporary, ec);
-    throw std::runtime_error("cannot write " + path.string() + ": " + std::strerror(err != 0 ? err : EIO));
-  };
-  errno = 0;
-  {
-    std::ofstream f(temporary, std::ios::binary);
-    if (!f) fail(errno);
-    f << text;
-    f.flush();
-    if (!f) fail(errno);
-  }
-  fs::rename(temporary, path, ec);
-  if (ec) fail(ec.value());
-}
-
-}  // namespace
-
 DissertationSummary write_dissertation(const std::string& results_dir, const std::string& out_file) {
   const DissertationResults results(results_dir);
   DissertationSummary s;
@@ -278,7 +255,7 @@ DissertationSummary write_dissertation(const std::string& results_dir, const std
   const std::string link_base = fs::absolute(results_dir).lexically_normal().lexically_relative(document_folder.lexically_normal()).generic_string();
   const std::string md = dissertation_markdown(results, results_dir, &s, link_base.empty() ? "." : link_base);
   if (out.has_parent_path()) fs::create_directories(out.parent_path());
-  write_with_reason(out, md);
+  capsule::write_file_atomically(out, md);
   s.file = out.string();
   return s;
 }

@@ -1,3 +1,4 @@
+#include "solver/common/atomic_write.hpp"
 #include "analysis/dissertation/table2_compare.hpp"
 
 #include <algorithm>
@@ -76,7 +77,7 @@ std::string table2_comparison(const std::vector<std::vector<BilinearEntry>>& all
         t2.rows.push_back(row);
       }
     }
-  std::ofstream(std::filesystem::path(out_dir) / "compare_table2.csv") << t2.to_csv();
+  capsule::write_file_atomically(std::filesystem::path(out_dir) / "compare_table2.csv", t2.to_csv());
   out << "\n" << t2.to_markdown();
   return "\n" + t2.to_markdown();
 }

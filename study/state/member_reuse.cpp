@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
+#include "solver/common/atomic_write.hpp"
 #include "solver/io/member_file.hpp"
 #include "study/state/member_state.hpp"
 
@@ -67,14 +68,11 @@ std::optional<FinishedMember> ReusableMembers::find(const Member& m, std::ostrea
 void copy_finished_member(const FinishedMember& source, const MemberPaths& target) {
   const MemberPaths from = member_paths_in(source.dir);
   fs::create_directories(target.dir);
-  const fs::path temporary = target.dir / "member.h5.copying";
-  fs::copy_file(from.h5, temporary, fs::copy_options::overwrite_existing);
-  if (const std::string why = reuse_refusal(temporary); !why.empty()) {
-    std::error_code ec;
-    fs::remove(temporary, ec);
-    throw std::runtime_error("the copy of " + from.h5.string() + " does not read whole: " + why);
-  }
-  fs::rename(temporary, target.h5);
+  replace_atomically(target.h5.string(), [&](const std::string& temporary) {
+    fs::copy_file(from.h5, temporary, fs::copy_options::overwrite_existing);
+    if (const std::string why = reuse_refusal(temporary); !why.empty())
+      throw std::runtime_error("the copy of " + from.h5.string() + " does not read whole: " + why);
+  });
   std::string log = read_file_text(from.log);
   if (!log.empty() && log.back() != '\n') log += "\n";
   log += "study: copied from " + source.campaign + "/members/" + source.dir.filename().string() +
