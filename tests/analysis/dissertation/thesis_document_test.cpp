@@ -105,6 +105,15 @@ int check_links(const fs::path& file, const std::string& md) {
   return figures;
 }
 
+// One row of a claim's verdict, for the document's counting and stories.
+ClaimResult claim_row(const std::string& key, const std::string& section, Verdict v) {
+  ClaimResult r;
+  r.key = key;
+  r.section = section;
+  r.verdict = v;
+  return r;
+}
+
 }  // namespace
 
 TEST_CASE("Thesis document: the first screen is the bottom line and one table per chapter", "[analysis][dissertation]") {
@@ -247,13 +256,7 @@ TEST_CASE("Thesis document: a long cell is cut at a word, and anchors are stable
 }
 
 TEST_CASE("Thesis document: the bottom line's verbs follow its counts (1 claim agrees, 2 claims differ)", "[analysis][dissertation]") {
-  const auto row = [](const std::string& key, const std::string& section, Verdict v) {
-    ClaimResult r;
-    r.key = key;
-    r.section = section;
-    r.verdict = v;
-    return r;
-  };
+  const auto row = claim_row;
   // one claim agrees, two differ, one holds in part (its two rows disagree), one cannot be told
   const std::vector<ClaimResult> rows = {row("3.1 one", "3.1", Verdict::agrees),      row("3.1 two", "3.1", Verdict::differs),
                                          row("3.2 three", "3.2", Verdict::differs),    row("3.3 four", "3.3", Verdict::agrees),
@@ -292,13 +295,7 @@ TEST_CASE("Thesis document: prose is wrapped at 400 characters, list items inden
 }
 
 TEST_CASE("Thesis document: the first screen says per chapter where the text holds and which differences are unexplained", "[analysis][dissertation]") {
-  const auto row = [](const std::string& key, const std::string& section, Verdict v) {
-    ClaimResult r;
-    r.key = key;
-    r.section = section;
-    r.verdict = v;
-    return r;
-  };
+  const auto row = claim_row;
   // 5.1.3 ratios differ has known causes in deviations.md; "5.9 nothing" has none
   const std::vector<ClaimResult> rows = {row("3.9 one", "3.1", Verdict::agrees), row("5.1.3 ratios differ", "5.1", Verdict::differs),
                                          row("5.9 nothing", "5.2", Verdict::differs), row("5.9 open", "5.2", Verdict::cannot_tell)};

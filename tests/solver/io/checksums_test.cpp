@@ -3,6 +3,8 @@
 // solver/io/member_file.hpp). Files written without them (before they existed) still read.
 #include <catch2/catch.hpp>
 
+#include "tests/solver/io/scratch_dir.hpp"
+
 #include <hdf5.h>
 
 #include <cmath>
@@ -19,12 +21,7 @@ using capsule::io::StateArchive;
 
 namespace {
 
-fs::path fresh_dir(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / ("capsule_checksum_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+using capsule::io::testing::fresh_dir;
 
 std::string write_member(const fs::path& dir) {
   const std::string path = (dir / "member.h5").string();

@@ -1,6 +1,8 @@
 // Member files: round trip, atomic completion, readable partial checkpoints.
 #include <catch2/catch.hpp>
 
+#include "tests/solver/io/scratch_dir.hpp"
+
 #include <cmath>
 #include <filesystem>
 
@@ -11,12 +13,7 @@ using capsule::io::MemberWriter;
 using capsule::io::read_member;
 
 namespace {
-fs::path fresh_dir(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / ("capsule_io_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+using capsule::io::testing::fresh_dir;
 }  // namespace
 
 TEST_CASE("member file round trip keeps attributes, series, beta, markers, shapes", "[io]") {

@@ -4,6 +4,8 @@
 // rows. The content hash covers the descriptions; files written before them read as they did.
 #include <catch2/catch.hpp>
 
+#include "tests/solver/io/scratch_dir.hpp"
+
 #include <hdf5.h>
 #include <hdf5_hl.h>
 
@@ -18,12 +20,7 @@ using namespace capsule::io;
 
 namespace {
 
-fs::path fresh_dir(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / ("capsule_describe_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+using capsule::io::testing::fresh_dir;
 
 std::string write_member(const fs::path& dir) {
   const std::string path = (dir / "member.h5").string();

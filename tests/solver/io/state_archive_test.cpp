@@ -1,6 +1,8 @@
 // Restart-point files (solver/io/state_archive.hpp): exact round trip, atomic write, refusals.
 #include <catch2/catch.hpp>
 
+#include "tests/solver/io/scratch_dir.hpp"
+
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -15,12 +17,7 @@ namespace fs = std::filesystem;
 using capsule::io::StateArchive;
 
 namespace {
-fs::path fresh_dir(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / ("capsule_archive_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+using capsule::io::testing::fresh_dir;
 bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
 }
