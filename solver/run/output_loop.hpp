@@ -28,22 +28,22 @@ namespace capsule {
 // The lattice-unit choices of a member (docs/guide/member-files.md "Layout").
 inline void record_units(io::MemberWriter& out, const Scene& scene, const Units& u) {
   out.set_attribute("tau", u.tau);
-  out.set_attribute("tau_rule", scene.tau > 0 ? std::string("from the scene") : std::string("choose_tau (README)"));
+  out.set_attribute("tau_rule", scene.resolution.tau > 0 ? std::string("from the scene") : std::string("choose_tau (README)"));
   out.set_attribute("nu", u.nu);
   out.set_attribute("nu_inside", u.nu_inside);
   out.set_attribute("shear_rate", u.shear_rate);
   out.set_attribute("E_s", u.E_s);
   out.set_attribute("E_B", u.E_B);
-  out.set_attribute("E_B_convention", scene.dim == 2 && scene.E_b_2d == BendingConvention2d::dissertation
+  out.set_attribute("E_B_convention", scene.dim == 2 && scene.conventions.E_b_2d == BendingConvention2d::dissertation
                                           ? std::string("E_B = 2 E_b a^2 E_s: the dissertation's 2D E_b = E_B/(a E_s) with a = 0.5 (README Conventions)")
                                           : std::string("E_B = E_b a^2 E_s (README Conventions)"));
   if (scene.dim == 2 && scene.shape == Shape::biconcave)
-    out.set_attribute("biconcave_size", scene.biconcave_2d == BiconcaveSize2d::dissertation
+    out.set_attribute("biconcave_size", scene.conventions.biconcave_2d == BiconcaveSize2d::dissertation
                                             ? std::string("(24)-(25) drawn with the printed a: equivalent radius 0.740 a (README Conventions)")
                                             : std::string("(24)-(25) scaled to equivalent radius a (README Conventions)"));
   out.set_attribute("mu_s", u.mu_s);
   out.set_attribute("steps_per_kt", u.steps_per_kt);
-  out.set_attribute("precision", choice_name(scene.precision));  // of the fluid's populations
+  out.set_attribute("precision", choice_name(scene.resolution.precision));  // of the fluid's populations
   const auto n = scene.grid();
   std::ostringstream grid;
   grid << n[0] << "x" << n[1];
@@ -93,8 +93,8 @@ std::string run_output_loop(Sim& sim, const Scene& scene, Protocol& protocol, io
                             const RunControl& control, double shear_rate, double nodes, Measure&& measure,
                             WriteShape&& write_shape) {
   using Clock = std::chrono::steady_clock;
-  const long steps_per_output = std::max(1L, std::lround(scene.output_interval_kt / shear_rate));
-  std::vector<double> shapes = scene.shapes_at_kt;
+  const long steps_per_output = std::max(1L, std::lround(scene.output.interval_kt / shear_rate));
+  std::vector<double> shapes = scene.output.shapes_at_kt;
   std::sort(shapes.begin(), shapes.end());
   std::size_t next_shape = 0;
   auto last_partial = Clock::now();
@@ -169,7 +169,7 @@ std::string run_output_loop(Sim& sim, const Scene& scene, Protocol& protocol, io
       row["shear_on"] = protocol.shear_on() ? 1.0 : 0.0;
       row["shear_factor"] = protocol.shear_factor(sim.kt());
       out.append(row, beta);
-      while (next_shape < shapes.size() && shapes[next_shape] <= sim.kt() + 0.5 * scene.output_interval_kt) {
+      while (next_shape < shapes.size() && shapes[next_shape] <= sim.kt() + 0.5 * scene.output.interval_kt) {
         write_shape(sim.kt());
         ++next_shape;
       }

@@ -23,7 +23,7 @@ std::string after_note(double after_kt) { return after_kt > 0 ? " (crossings cou
 }  // namespace
 
 Protocol::Protocol(const Scene& scene)
-    : shear_(scene.shear), recover_(scene.recover),
+    : shear_(scene.protocol.shear), recover_(scene.protocol.recover),
       t_max_(nan_v), D_max_(nan_v), t_stop_(nan_v), D_stop_(nan_v),
       t_min_(nan_v), D_min_(nan_v), t_end_(nan_v), D_inf_(nan_v) {}
 

@@ -130,7 +130,7 @@ int run_member(const RunOptions& options) {
       // A cell given in physical units: what kt = 1 and a length of a are, in seconds and
       // micrometres (the scene attribute holds the physical block and its groups).
       if (scene.physical) {
-        const PhysicalGroups g = physical_groups(*scene.physical, scene.law, scene.sls_viscosity);
+        const PhysicalGroups g = physical_groups(*scene.physical, scene.law, scene.conventions.sls_viscosity);
         out.set_attribute("seconds_per_kt", g.time_unit_s);
         out.set_attribute("micrometres_per_a", g.length_unit_um);
       }

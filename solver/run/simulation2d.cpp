@@ -57,21 +57,21 @@ struct Simulation2D::Impl {
   static membrane2d::Membrane make_membrane(const Scene& s, const Units& u, const std::vector<int>& n) {
     const double cx = 0.5 * n[0], cy = 0.5 * n[1];
     const double incline = 0.25 * std::numbers::pi;  // 45 degrees (Sec. 2.4)
-    // "dissertation": (24)-(25) with the printed a, i.e. equivalent radius 0.740 a (Scene::biconcave_2d).
+    // "dissertation": (24)-(25) with the printed a, i.e. equivalent radius 0.740 a (SceneConventions::biconcave_2d).
     // Marker inset (scene resolution.marker_inset, 0 by default in 2D): the nodes, and the reference
     // shape, on the radius r_m = a - inset, the moduli unchanged (as in 3D, simulation3d.cpp); the
     // smeared membrane then acts as a circle of radius about a. E_b is the bending number of the
     // circle the membrane is: E_B = E_b r_m^2 E_s.
-    const double scale = (s.a - s.marker_inset) / s.a;
-    const double r_eq = scale * (s.biconcave_2d == BiconcaveSize2d::dissertation ? s.a * membrane2d::biconcave_equivalent_radius() : s.a);
-    auto xy = s.shape == Shape::biconcave ? membrane2d::biconcave(s.segments, r_eq, cx, cy, incline)
-                                     : membrane2d::circle(s.segments, scale * s.a, cx, cy, incline);
+    const double scale = (s.resolution.a - s.resolution.marker_inset) / s.resolution.a;
+    const double r_eq = scale * (s.conventions.biconcave_2d == BiconcaveSize2d::dissertation ? s.resolution.a * membrane2d::biconcave_equivalent_radius() : s.resolution.a);
+    auto xy = s.shape == Shape::biconcave ? membrane2d::biconcave(s.resolution.segments, r_eq, cx, cy, incline)
+                                     : membrane2d::circle(s.resolution.segments, scale * s.resolution.a, cx, cy, incline);
     return membrane2d::Membrane(std::move(xy), {u.E_s, membrane_bending_modulus(s, u), u.mu_s}, elastic_law_2d(s.law));
   }
 
   Impl(const Scene& s, const Units& u, const std::vector<int>& n)
-      : scene(s), units(u), grid{n[0], n[1], 1}, fluid(n[0], n[1], 1, u.nu, s.precision),
-        membrane(make_membrane(s, u, n)), exact_kv(s.kelvin_voigt_step == KelvinVoigtStep::exact_mobility) {
+      : scene(s), units(u), grid{n[0], n[1], 1}, fluid(n[0], n[1], 1, u.nu, s.resolution.precision),
+        membrane(make_membrane(s, u, n)), exact_kv(s.resolution.kelvin_voigt_step == KelvinVoigtStep::exact_mobility) {
     U.assign(2 * membrane.size(), 0.0);
     area0 = membrane2d::polygon_area(membrane.positions());
     if (s.V != 1.0) {
@@ -90,7 +90,7 @@ struct Simulation2D::Impl {
 Simulation2D::Simulation2D(const Scene& scene, bool start_in_shear) {
   if (scene.dim != 2) throw std::invalid_argument("Simulation2D: scene.dim must be 2");
   // Requested physics is never silently dropped: the power law (99)-(104) is built for the 3D membrane only.
-  if (scene.power_law_K > 0)
+  if (scene.power_law.K > 0)
     throw std::invalid_argument("power_law.K > 0: the power-law membrane viscosity (Sec. 5.2) is a 3D model; in 2D use eta (Kelvin-Voigt)");
   const Units u = units_for(scene, choose_tau(scene));
   impl_ = std::make_unique<Impl>(scene, u, scene.grid());
@@ -274,7 +274,7 @@ std::map<std::string, double> Simulation2D::row() {
   double umax = 0;
   for (std::size_t i = 0; i < s.grid.size(); ++i)
     umax = std::max(umax, std::hypot(s.fluid.velocity(0)[i], s.fluid.velocity(1)[i]));
-  const double a = s.scene.a;
+  const double a = s.scene.resolution.a;
   return {
       {"kt", kt()},
       {"D_xy", td.D},
@@ -316,16 +316,16 @@ std::string run_simulation2d(const Scene& scene, io::MemberWriter& out, const Ru
   Protocol protocol(scene);
   const Units& u = sim.units();
   record_units(out, scene, u);
-  if (scene.marker_inset != 0.0) {
+  if (scene.resolution.marker_inset != 0.0) {
     // The nodes on r_m = a - inset, bending that of the circle they form (make_membrane).
-    const double r_m = scene.a - scene.marker_inset;
-    out.set_attribute("marker_inset", scene.marker_inset);
+    const double r_m = scene.resolution.a - scene.resolution.marker_inset;
+    out.set_attribute("marker_inset", scene.resolution.marker_inset);
     out.set_attribute("marker_radius", r_m);
     out.set_attribute("E_B", membrane_bending_modulus(scene, u));
     out.set_attribute("E_B_convention", std::string("E_B = E_b r_m^2 E_s, r_m = a - marker_inset (the membrane's radius)") +
-                                            (scene.E_b_2d == BendingConvention2d::dissertation ? ", with the dissertation's 2D factor 2 (README Conventions)" : ""));
+                                            (scene.conventions.E_b_2d == BendingConvention2d::dissertation ? ", with the dissertation's 2D factor 2 (README Conventions)" : ""));
   }
-  out.set_attribute("segments", static_cast<long>(scene.segments));
+  out.set_attribute("segments", static_cast<long>(scene.resolution.segments));
   out.set_attribute("delta", std::string("peskin4: Peskin 4-point (zero first moment), not the cosine (18): README"));
   out.set_attribute("beta_tracked", std::string("node 0, initially at the end of the major axis; wrapped into (-pi, pi]"));
 

@@ -77,9 +77,9 @@ class Simulation3D {
  public:
   explicit Simulation3D(const Scene& s)
       : scene_(s), units_(units_for(s, choose_tau(s))), n_(s.grid()),
-        grid_{n_[0], n_[1], n_[2]}, fluid_(n_[0], n_[1], n_[2], units_.nu, s.precision) {
+        grid_{n_[0], n_[1], n_[2]}, fluid_(n_[0], n_[1], n_[2], units_.nu, s.resolution.precision) {
     if (s.dim != 3) throw std::invalid_argument("Simulation3D: scene.dim must be 3");
-    fluid_.set_collision(s.collision);
+    fluid_.set_collision(s.resolution.collision);
     build_membrane();
     U_.assign(3 * mesh_.vertex_count(), 0.0);
     const double k = units_.shear_rate, H = grid_.ny;
@@ -89,9 +89,9 @@ class Simulation3D {
     });
     // The viscosity field exists only for a contrast (V != 1) or a power-law membrane (K > 0).
     if (s.V != 1.0) contrast_ = std::make_unique<ib::ViscosityContrast<3>>(grid_, units_.nu, units_.nu_inside);
-    if (s.power_law_K > 0 && s.power_law_model == PowerLawModel::fluid_shell) {
+    if (s.power_law.K > 0 && s.power_law.model == PowerLawModel::fluid_shell) {
       power_law_ = std::make_unique<ib::PowerLawViscosity<3>>(
-          grid_, delta_, ib::PowerLawParameters{s.power_law_K, s.power_law_n, units_.nu, s.a, units_.shear_rate});
+          grid_, delta_, ib::PowerLawParameters{s.power_law.K, s.power_law.n, units_.nu, s.resolution.a, units_.shear_rate});
       if (contrast_) base_nu_.assign(grid_.size(), units_.nu);
     }
     if (contrast_ || power_law_) update_viscosity();
@@ -123,11 +123,11 @@ class Simulation3D {
   // invariants of C against the reference shape).
   std::vector<m3::VtkField> snapshot_point_fields() const {
     const std::size_t n = mesh_.vertex_count();
-    const double velocity_unit = units_.shear_rate * scene_.a;
+    const double velocity_unit = units_.shear_rate * scene_.resolution.a;
     m3::VtkField velocity{"membrane_velocity", 3, std::vector<double>(3 * n)};
     for (std::size_t i = 0; i < 3 * n; ++i) velocity.values[i] = U_[i] / velocity_unit;
     m3::VtkField curvature{"mean_curvature", 1, m3::fit_curvatures(mesh_).mean};
-    for (double& k : curvature.values) k *= scene_.a;
+    for (double& k : curvature.values) k *= scene_.resolution.a;
     const m3::Vec3 c = m3::inertia_deformation(mesh_).centroid;
     m3::VtkField turn{"turned_angle", 1, std::vector<double>(n)};
     for (std::size_t i = 0; i < n; ++i) {
@@ -186,7 +186,7 @@ class Simulation3D {
   std::map<std::string, double> row(std::vector<double>& beta) {
     const auto d = m3::inertia_deformation(mesh_);
     beta = phase_.update(mesh_, d.centroid, d.theta);
-    const double a = scene_.a;
+    const double a = scene_.resolution.a;
     double umax2 = 0;
     for (std::size_t i = 0; i < grid_.size(); ++i) {
       const double s = fluid_.velocity(0)[i] * fluid_.velocity(0)[i] + fluid_.velocity(1)[i] * fluid_.velocity(1)[i] +
@@ -210,7 +210,7 @@ class Simulation3D {
         {"centroid_z", (d.centroid.z() - 0.5 * grid_.nz) / a},
         {"max_speed", std::sqrt(umax2)},
     };
-    if (scene_.power_law_K > 0) std::tie(r["gamma_min"], r["gamma_max"]) = gamma_range();
+    if (scene_.power_law.K > 0) std::tie(r["gamma_min"], r["gamma_max"]) = gamma_range();
     return r;
   }
 
@@ -339,13 +339,13 @@ class Simulation3D {
 
   void build_membrane() {
     const Scene& s = scene_;
-    const double a = s.a;
+    const double a = s.resolution.a;
     // Marker inset (scene resolution.marker_inset): the markers, and the reference shape, on the
     // radius r_m = a - inset, the moduli unchanged; the smeared shell acts as a surface about
     // half a lattice unit outside its markers (capsule rigid-sphere), so the capsule the flow
     // sees is then about the radius a. c0 is a curvature of the shape: c0 / r_m.
-    const double r_m = a - s.marker_inset;
-    const m3::Mesh unit = m3::unit_icosphere(s.mesh_level);
+    const double r_m = a - s.resolution.marker_inset;
+    const m3::Mesh unit = m3::unit_icosphere(s.resolution.mesh_level);
     const m3::Vec3 centre(0.5 * grid_.nx, 0.5 * grid_.ny, 0.5 * grid_.nz);
     const double incline = 0.25 * std::numbers::pi;  // 45 degrees in the xy-plane (Sec. 2.5)
     if (s.shape == Shape::sphere) mesh_ = m3::sphere_mesh(unit, r_m);
@@ -358,8 +358,8 @@ class Simulation3D {
     m3::rotate_about_z_and_translate(reference, incline, centre);
 
     m3::MembraneParameters p;
-    delta_ = s.delta;
-    update_ = s.membrane_update;
+    delta_ = s.resolution.delta;
+    update_ = s.resolution.membrane_update;
     shear_modulus_ = shear_modulus_3d(s, units_);
     p.law = m3::Constitutive{elastic_law_3d(s.law), shear_modulus_, s.C};
     // The Maxwell element (solver/scene/units.hpp): the SLS (63)-(67), E_m = G E_s, tau_m = mu_s /
@@ -369,13 +369,13 @@ class Simulation3D {
     // power-law membrane and n = 1 is eta = K (physical reading). The Kelvin-Voigt limit of the
     // SLS has surface viscosity E_m tau_m = mu_s ("physical"); the text's (63) read literally has a
     // Maxwell modulus g_1(0)/2 = E_m/3 and tau_m = mu_s / E_m with E_m = G E_s = 3 G (E_s/3): its
-    // limit is mu_s/3 ("dissertation", Scene::sls_viscosity).
+    // limit is mu_s/3 ("dissertation", SceneConventions::sls_viscosity).
     if (s.eta > 0 && !(s.G > 0)) throw std::invalid_argument("eta > 0 needs G = E_m/E_s > 0");
     const MaxwellElement3d maxwell = maxwell_element_3d(s, units_);
     if (maxwell.present) {
       tau_m_ = maxwell.tau_m;
       p.maxwell = maxwell.power_law
-                      ? m3::MaxwellElement{maxwell.E_m, tau_m_, 1.0, m3::PowerLawRelaxation{true, s.power_law_n, units_.shear_rate}}
+                      ? m3::MaxwellElement{maxwell.E_m, tau_m_, 1.0, m3::PowerLawRelaxation{true, s.power_law.n, units_.shear_rate}}
                       : m3::MaxwellElement{maxwell.E_m, tau_m_, 1.0};
     }
     // E_b is the bending number of the sphere the membrane is: with the markers on r_m = a -
@@ -529,34 +529,34 @@ std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, const Ru
   out.set_attribute("E_B", sim.E_B());
   out.set_attribute("E_B_convention", std::string("E_B = E_b r_m^2 E_s, r_m = a - marker_inset (the membrane's radius); W_b = (E_B/2) int (2 kappa - c0)^2 dS"));
   out.set_attribute("K_v", sim.K_v());
-  out.set_attribute("mesh_level", static_cast<long>(scene.mesh_level));
+  out.set_attribute("mesh_level", static_cast<long>(scene.resolution.mesh_level));
   out.set_attribute("vertices", static_cast<long>(mesh.vertex_count()));
   out.set_attribute("triangles", static_cast<long>(mesh.triangle_count()));
   out.set_attribute("law", choice_name(scene.law));
   out.set_attribute("C", scene.C);
   out.set_attribute("G", scene.G);
   out.set_attribute("reference_case", choice_name(scene.reference_case));
-  const bool membrane_power_law = scene.power_law_K > 0 && scene.power_law_model == PowerLawModel::membrane;
+  const bool membrane_power_law = scene.power_law.K > 0 && scene.power_law.model == PowerLawModel::membrane;
   out.set_attribute("viscoelastic", scene.eta > 0 ? std::string("standard linear solid (63)-(67), tau_m = mu_s/E_m")
                                     : membrane_power_law ? std::string("standard linear solid (63)-(67), tau = mu_s(gamma)/E_m per triangle (power law (102))")
                                                          : std::string("none"));
-  out.set_attribute("sls_viscosity", scene.sls_viscosity == SlsViscosity::dissertation
+  out.set_attribute("sls_viscosity", scene.conventions.sls_viscosity == SlsViscosity::dissertation
                                          ? std::string("dissertation: (63) read literally, Kelvin-Voigt limit mu_s/3 = eta a mu_a/3")
                                          : std::string("physical: Kelvin-Voigt limit mu_s = eta a mu_a"));
   if (scene.eta > 0 || membrane_power_law) out.set_attribute("tau_m", sim.tau_m());
-  out.set_attribute("delta", scene.delta == ib::Delta::peskin4
+  out.set_attribute("delta", scene.resolution.delta == ib::Delta::peskin4
                                  ? std::string("peskin4: Peskin 4-point (zero first moment), not the cosine (18): README")
-                                 : choice_name(scene.delta));
-  out.set_attribute("marker_inset", scene.marker_inset);
-  out.set_attribute("marker_radius", scene.a - scene.marker_inset);
-  out.set_attribute("marker_inset_rule", scene.marker_inset_rule == MarkerInsetRule::given
-                                             ? choice_name(scene.marker_inset_rule)
-                                             : choice_name(scene.marker_inset_rule) + ": r_m + d_S(r_m) = a, solver/ib/hydrodynamic_radius.hpp");
+                                 : choice_name(scene.resolution.delta));
+  out.set_attribute("marker_inset", scene.resolution.marker_inset);
+  out.set_attribute("marker_radius", scene.resolution.a - scene.resolution.marker_inset);
+  out.set_attribute("marker_inset_rule", scene.resolution.marker_inset_rule == MarkerInsetRule::given
+                                             ? choice_name(scene.resolution.marker_inset_rule)
+                                             : choice_name(scene.resolution.marker_inset_rule) + ": r_m + d_S(r_m) = a, solver/ib/hydrodynamic_radius.hpp");
   if (membrane_power_law)
     out.set_attribute("power_law", std::string("membrane: mu_s = K a mu_a (gamma/k)^(n - 1) (102) per triangle, gamma = sqrt(2 tr D_s^2) (101) of the triangle's "
                                                "own surface rate of deformation over the last step, in units of k, floored at 0.01; the "
                                                "Maxwell element of the standard linear solid (63)-(67) with E_m = G E_s and tau = mu_s / E_m"));
-  else if (scene.power_law_K > 0)
+  else if (scene.power_law.K > 0)
     out.set_attribute("power_law", std::string("mu_mem = K a mu_a (gamma/k)^(n - 1) (102), a surface viscosity like mu_s = eta a mu_a; gamma = sqrt(2 tr D^2) (101) of the "
                                                "surface rate of deformation (99)-(100), in units of k, floored at 0.01; spread "
                                                "with the Voronoi areas (103) and added to the fluid viscosity (104)"));
@@ -571,10 +571,10 @@ std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, const Ru
       [&](std::vector<double>& beta) { return sim.row(beta); },
       [&](double kt) {
         out.add_shape(kt, sim.shape(), 3, triangles);
-        if (scene.snapshots == Snapshots::vtk) {
+        if (scene.output.snapshots == Snapshots::vtk) {
           const std::string file = snapshot_path(out.final_path(), kt);
           // Points in units of a from the domain centre, as the series centroid_x/y/z.
-          const m3::VtkFrame frame{0.5 * m3::Vec3(scene.grid()[0], scene.grid()[1], scene.grid()[2]), scene.a};
+          const m3::VtkFrame frame{0.5 * m3::Vec3(scene.grid()[0], scene.grid()[1], scene.grid()[2]), scene.resolution.a};
           m3::write_vtp(file, sim.mesh(), sim.snapshot_point_fields(), sim.snapshot_cell_fields(), frame);
           snapshots.emplace_back(kt, std::filesystem::path(file).filename().string());
           m3::write_pvd(snapshot_base(out.final_path()) + ".pvd", snapshots);  // a time series for ParaView

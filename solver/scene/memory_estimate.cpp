@@ -18,19 +18,19 @@ MemoryEstimate estimate_memory(const Scene& s) {
   // One padded array of populations (in-place streaming) at the scene's precision; force 3,
   // velocity 3, density 1 in double. Measured peak RSS of the reference 3D member (single,
   // 100 x 100 x 80, no restart point written): 133 MB against 131 MB from this and the base.
-  const double population_bytes = s.precision == lbm::Precision::single_precision ? 4 : 8;
+  const double population_bytes = s.resolution.precision == lbm::Precision::single_precision ? 4 : 8;
   m.fluid = Q * static_cast<double>(rows.per_population()) * population_bytes + 7 * n * 8;
   // The power law needs a viscosity field only in the text's fluid-shell reading (103)-(104).
-  const bool shell = s.dim == 3 && s.power_law_K > 0 && s.power_law_model == PowerLawModel::fluid_shell;
+  const bool shell = s.dim == 3 && s.power_law.K > 0 && s.power_law.model == PowerLawModel::fluid_shell;
   const bool field = s.V != 1.0 || shell;
   if (field) m.fields += 17 * n;                        // nu, s_nu, marked
   if (s.V != 1.0) m.fields += 19 * n;                   // distance, signed distance, band and inside flags, flood fill
   if (shell) m.fields += 16 * n + (s.V != 1.0 ? 8 * n : 0);  // field, slot (, base nu)
   if (s.dim == 3) {
-    const double vertices = 10.0 * double(1L << (2 * s.mesh_level)) + 2;
+    const double vertices = 10.0 * double(1L << (2 * s.resolution.mesh_level)) + 2;
     m.membrane = vertices * 1500;  // mesh, topology, forces, curvature fit, SLS memory (~1.5 kB per vertex)
   } else {
-    m.membrane = s.segments * 400.0;
+    m.membrane = s.resolution.segments * 400.0;
   }
   m.restart = (Q + 4 + (field ? 1 : 0)) * n * 8;
   m.base = 25e6;  // measured: 25 MB peak for a tiny scene

@@ -22,18 +22,18 @@ double longest_kt(const PhaseSpec& p) { return p.until == StopCondition::time ? 
 void check_run_bounds(const Scene& s, const std::string& source) {
   const double tau = choose_tau(s);
   const Units u = units_for(s, tau);
-  const std::string lattice = "a = " + fmt(s.a) + ", Re = " + fmt(s.Re) + ", tau = " + fmt(tau) +
-                              (s.tau > 0 ? "" : " (chosen by the solver)");
-  const double kt = longest_kt(s.shear) + longest_kt(s.recover);
+  const std::string lattice = "a = " + fmt(s.resolution.a) + ", Re = " + fmt(s.Re) + ", tau = " + fmt(tau) +
+                              (s.resolution.tau > 0 ? "" : " (chosen by the solver)");
+  const double kt = longest_kt(s.protocol.shear) + longest_kt(s.protocol.recover);
   const double steps = kt * u.steps_per_kt;
   if (!(steps <= max_run_steps))
     throw SceneError(source + ": Re: the run takes up to " + fmt(steps) + " time steps (" + fmt(kt) + " kt at " +
                      fmt(u.steps_per_kt) + " steps per kt, a^2 / (Re nu) with " + lattice +
                      ") (allowed: at most " + fmt(max_run_steps) + " time steps: Re >= " +
                      fmt(s.Re * steps / max_run_steps) + " at this a and tau, or fewer kt)");
-  const double rows = kt / s.output_interval_kt;
+  const double rows = kt / s.output.interval_kt;
   if (rows > max_output_rows)
-    throw SceneError(source + ": output.interval_kt: " + fmt(s.output_interval_kt) + " kt over a run of up to " +
+    throw SceneError(source + ": output.interval_kt: " + fmt(s.output.interval_kt) + " kt over a run of up to " +
                      fmt(kt) + " kt makes " + fmt(rows) + " rows (allowed: [" + fmt(kt / max_output_rows) +
                      ", 10] for this protocol, at most " + fmt(max_output_rows) + " rows)");
   // The inside's relaxation time 0.5 + 3 V nu (13); a zero inside viscosity is no capsule fluid.

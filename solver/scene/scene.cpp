@@ -4,7 +4,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -203,12 +202,12 @@ void ignore_other_dimension(Scene& s) {
     s.G = defaults.G;
     s.c0 = defaults.c0;
     s.volume_penalty = defaults.volume_penalty;
-    s.power_law_n = defaults.power_law_n;
-    s.mesh_level = defaults.mesh_level;
-    s.delta = defaults.delta;
-    s.snapshots = defaults.snapshots;
+    s.power_law.n = defaults.power_law.n;
+    s.resolution.mesh_level = defaults.resolution.mesh_level;
+    s.resolution.delta = defaults.resolution.delta;
+    s.output.snapshots = defaults.output.snapshots;
   } else {
-    s.segments = defaults.segments;
+    s.resolution.segments = defaults.resolution.segments;
   }
 }
 
@@ -291,7 +290,7 @@ void read_physical(ObjectReader& r, Scene& s) {
   c.shear_rate_per_s = p.number("shear_rate_per_s", std::nullopt, 0.0, 1e7, true);
   c.density_kg_per_m3 = p.number("density_kg_per_m3", 1000.0, 0.0, 1e5, true);
   p.refuse_unknown();
-  const PhysicalGroups g = physical_groups(c, s.law, s.sls_viscosity);
+  const PhysicalGroups g = physical_groups(c, s.law, s.conventions.sls_viscosity);
   const auto take = [&](const std::string& key, double& field, double derived, double lo, double hi, bool lo_open) {
     const std::string range = std::string(lo_open ? "(" : "[") + fmt(lo) + ", " + fmt(hi) + "]";
     if (!std::isfinite(derived) || (lo_open ? derived <= lo : derived < lo) || derived > hi)
@@ -319,24 +318,24 @@ void read_power_law(ObjectReader& r, Scene& s, const SceneDefaults& defaults) {
   using enum PowerLawModel;
   json pl = r.object("power_law", false);
   ObjectReader p(pl, r.source(), r.child_path("power_law"), {"K", "n", "model"});
-  s.power_law_K = p.number("K", 0.0, 0.0, 1e3);
-  s.power_law_n = p.number("n", 1.0, 0.0, 3.0, true);
+  s.power_law.K = p.number("K", 0.0, 0.0, 1e3);
+  s.power_law.n = p.number("n", 1.0, 0.0, 3.0, true);
   // membrane by default (physics version 6): it converges with a and does not move with the
   // fluid's tau, where the text's shell (103)-(104) does both (docs/findings/accuracy_and_stability.md).
-  s.power_law_model = p.choice<PowerLawModel>("model", defaults.power_law_model, {fluid_shell, membrane});
+  s.power_law.model = p.choice<PowerLawModel>("model", defaults.power_law_model, {fluid_shell, membrane});
   // The 2D driver refuses it (simulation2d.cpp); `capsule check` and `study plan` must too.
-  if (s.dim == 2 && s.power_law_K > 0)
+  if (s.dim == 2 && s.power_law.K > 0)
     p.fail("K", "the power-law membrane viscosity (Sec. 5.2) is a 3D model; in 2D use eta (Kelvin-Voigt)",
            "0 in 2D");
   // The membrane reading is the standard linear solid's Maxwell element with a power-law
   // viscosity: it replaces the Kelvin-Voigt eta, it is not added to it.
-  if (s.power_law_model == membrane && s.power_law_K > 0 && s.eta > 0)
+  if (s.power_law.model == membrane && s.power_law.K > 0 && s.eta > 0)
     p.fail("model", "\"membrane\" puts the power law in the membrane's own viscous element, which eta = " +
                         std::to_string(s.eta) + " already sets",
            "eta = 0 with model \"membrane\", or model \"fluid_shell\"");
-  if (s.power_law_model == membrane && s.power_law_K > 0 && !(s.G > 0))
+  if (s.power_law.model == membrane && s.power_law.K > 0 && !(s.G > 0))
     p.fail("model", "\"membrane\" needs the Maxwell modulus G = E_m / E_s > 0", "G > 0");
-  if (!(s.power_law_K > 0)) s.power_law_model = defaults.power_law_model;  // no power law: the key means nothing
+  if (!(s.power_law.K > 0)) s.power_law.model = defaults.power_law_model;  // no power law: the key means nothing
   p.refuse_unknown();
 }
 
@@ -344,57 +343,57 @@ void read_power_law(ObjectReader& r, Scene& s, const SceneDefaults& defaults) {
 void read_conventions(ObjectReader& r, Scene& s) {
   json conv = r.object("conventions", false);
   ObjectReader c(conv, r.source(), r.child_path("conventions"), {"sls_viscosity", "E_b_2d", "biconcave_2d"});
-  s.sls_viscosity = c.choice<SlsViscosity>("sls_viscosity", SlsViscosity::physical,
+  s.conventions.sls_viscosity = c.choice<SlsViscosity>("sls_viscosity", SlsViscosity::physical,
                                            {SlsViscosity::physical, SlsViscosity::dissertation});
-  s.E_b_2d = c.choice<BendingConvention2d>("E_b_2d", BendingConvention2d::dimensionless,
+  s.conventions.E_b_2d = c.choice<BendingConvention2d>("E_b_2d", BendingConvention2d::dimensionless,
                                            {BendingConvention2d::dimensionless, BendingConvention2d::dissertation});
-  if (s.dim == 2 && s.sls_viscosity != SlsViscosity::physical)
+  if (s.dim == 2 && s.conventions.sls_viscosity != SlsViscosity::physical)
     c.fail("sls_viscosity", "the standard linear solid is the 3D membrane's", "\"physical\" in 2D");
-  if (s.dim == 3 && s.E_b_2d != BendingConvention2d::dimensionless)
+  if (s.dim == 3 && s.conventions.E_b_2d != BendingConvention2d::dimensionless)
     c.fail("E_b_2d", "the 2D bending convention does not apply to a 3D scene", "\"dimensionless\" in 3D");
-  s.biconcave_2d = c.choice<BiconcaveSize2d>("biconcave_2d", BiconcaveSize2d::equivalent,
+  s.conventions.biconcave_2d = c.choice<BiconcaveSize2d>("biconcave_2d", BiconcaveSize2d::equivalent,
                                              {BiconcaveSize2d::equivalent, BiconcaveSize2d::dissertation});
-  if (s.biconcave_2d != BiconcaveSize2d::equivalent && (s.dim != 2 || s.shape != Shape::biconcave))
+  if (s.conventions.biconcave_2d != BiconcaveSize2d::equivalent && (s.dim != 2 || s.shape != Shape::biconcave))
     c.fail("biconcave_2d", "the size reading of (24)-(25) applies to the 2D biconcave capsule only",
            "\"equivalent\" unless dim is 2 and shape is \"biconcave\"");
   c.refuse_unknown();
 }
 
 // resolution: the lattice (a, domain, membrane discretisation, tau).
-void read_lattice(ObjectReader& q, const json& res, Scene& s, const SceneDefaults& defaults) {
-  s.a = q.number("a", 10.0, 2.0, 200.0);
-  s.domain = q.numbers("domain", defaults.domain, 3.0, 100.0, s.dim, s.dim);
-  s.segments = q.integer("segments", 140, 16, 100000);
-  s.mesh_level = q.integer("mesh_level", 4, 0, 6);
+void read_lattice(ObjectReader& q, const json& block, int dim, Scene::Resolution& res, const SceneDefaults& defaults) {
+  res.a = q.number("a", 10.0, 2.0, 200.0);
+  res.domain = q.numbers("domain", defaults.domain, 3.0, 100.0, dim, dim);
+  res.segments = q.integer("segments", 140, 16, 100000);
+  res.mesh_level = q.integer("mesh_level", 4, 0, 6);
   if (q.has("tau")) {
-    const json& t = res.at("tau");
+    const json& t = block.at("tau");
     const std::string allowed = "0 (chosen by the solver) or [0.505, 10]";
     if (!t.is_number()) q.fail("tau", "expected a number, got " + message_value(t), allowed);
     if (t.get<double>() != 0.0 && (t.get<double>() < 0.505 || t.get<double>() > 10.0))
       q.fail("tau", "relaxation time " + message_value(t) + " cannot be run stably", allowed);
-    s.tau = unsigned_zero(t.get<double>());
+    res.tau = unsigned_zero(t.get<double>());
   }
 }
 
 // resolution: the IB delta, the fluid's precision and the membrane update (20).
-void read_delta_and_update(ObjectReader& q, Scene& s, const SceneDefaults& defaults) {
+void read_delta_and_update(ObjectReader& q, int dim, Scene::Resolution& res, const SceneDefaults& defaults) {
   using enum ib::Delta;
   // 3D: Roma, Peskin and Berger's 3-point delta by default (physics version 6): with the
   // stresslet's marker inset it has the smaller finite-Ca error of the two measured deltas at
   // 27 nodes a stencil instead of 64 (docs/findings/immersed_boundary_error_budget.md).
-  s.delta = q.choice<ib::Delta>("kernel", defaults.delta, {peskin4, roma3, linear2, cosine, keys4});
+  res.delta = q.choice<ib::Delta>("kernel", defaults.delta, {peskin4, roma3, linear2, cosine, keys4});
   // The 2D driver's implicit Kelvin-Voigt step uses the self-mobility of peskin4 (simulation2d.cpp).
-  if (s.dim == 2 && s.delta != peskin4)
-    q.fail("kernel", "kernel \"" + choice_name(s.delta) + "\" is 3D only", "\"peskin4\" in 2D");
+  if (dim == 2 && res.delta != peskin4)
+    q.fail("kernel", "kernel \"" + choice_name(res.delta) + "\" is 3D only", "\"peskin4\" in 2D");
   // 3D single by default (campaigns/precision_*.json: steady D_xy and fitted times within 1e-4
   // relative of double, the fluid about 2x faster); 2D double (cheap, its campaigns ran so).
-  s.precision = q.choice<lbm::Precision>("precision", defaults.precision,
+  res.precision = q.choice<lbm::Precision>("precision", defaults.precision,
                                          {lbm::Precision::double_precision, lbm::Precision::single_precision});
   using enum ib::MembraneUpdate;
-  s.membrane_update =
+  res.membrane_update =
       q.choice<ib::MembraneUpdate>("membrane_update", euler, {euler, previous_velocity, adams_bashforth2});
-  if (s.dim == 2 && s.membrane_update != euler)
-    q.fail("membrane_update", "membrane update \"" + choice_name(s.membrane_update) + "\" is 3D only", "\"euler\" in 2D");
+  if (dim == 2 && res.membrane_update != euler)
+    q.fail("membrane_update", "membrane update \"" + choice_name(res.membrane_update) + "\" is 3D only", "\"euler\" in 2D");
 }
 
 // resolution.marker_inset: markers inside the radius (the immersed boundary's hydrodynamic
@@ -402,86 +401,89 @@ void read_delta_and_update(ObjectReader& q, Scene& s, const SceneDefaults& defau
 // docs/findings/immersed_boundary_error_budget.md). 3D default the stresslet's rule
 // (solver/ib/hydrodynamic_radius.hpp) where the delta's shell was measured, else 0; 2D 0; a
 // number sets it in lattice units.
-void read_marker_inset(ObjectReader& q, const json& res, Scene& s, const SceneDefaults& defaults) {
+void read_marker_inset(ObjectReader& q, const json& block, int dim, Scene::Resolution& res, const SceneDefaults& defaults) {
   using enum MarkerInsetRule;
-  s.marker_inset_rule = defaults.marker_inset_rule == stresslet && ib::stresslet_radius_gap(s.delta) ? stresslet : given;
-  s.marker_inset = 0.0;
+  res.marker_inset_rule = defaults.marker_inset_rule == stresslet && ib::stresslet_radius_gap(res.delta) ? stresslet : given;
+  res.marker_inset = 0.0;
   if (q.has("marker_inset")) {
-    const json& m = res.at("marker_inset");
+    const json& m = block.at("marker_inset");
     if (m.is_string() && choice_from_name<MarkerInsetRule>(m.get<std::string>()) == stresslet) {
-      s.marker_inset_rule = stresslet;
+      res.marker_inset_rule = stresslet;
     } else if (m.is_number()) {
-      s.marker_inset_rule = given;
-      s.marker_inset = q.number("marker_inset", 0.0, 0.0, 2.0);
+      res.marker_inset_rule = given;
+      res.marker_inset = q.number("marker_inset", 0.0, 0.0, 2.0);
     } else {
       q.fail("marker_inset", "marker inset " + message_value(m) + " is neither a number nor a rule",
              "\"stresslet\" or a number in [0, 2]");
     }
   }
-  if (s.marker_inset_rule == stresslet) {
-    const std::string delta = choice_name(s.delta);
-    const auto gap = s.dim == 3 ? ib::stresslet_radius_gap(s.delta) : ib::stresslet_radius_gap_2d(s.delta);
+  if (res.marker_inset_rule == stresslet) {
+    const std::string delta = choice_name(res.delta);
+    const auto gap = dim == 3 ? ib::stresslet_radius_gap(res.delta) : ib::stresslet_radius_gap_2d(res.delta);
     if (!gap)
       q.fail("marker_inset", std::string("the stresslet's inset is measured for the kernels ") +
-                                 (s.dim == 3 ? "peskin4, roma3 and keys4" : "peskin4") + " in " + std::to_string(s.dim) +
+                                 (dim == 3 ? "peskin4, roma3 and keys4" : "peskin4") + " in " + std::to_string(dim) +
                                  "D, not \"" + delta + "\"",
              "a number in [0, 2] with kernel \"" + delta + "\"");
-    s.marker_inset = ib::stresslet_marker_inset(*gap, s.a);
-    if (!(s.marker_inset >= 0.0))
-      q.fail("marker_inset", "the stresslet's inset has no solution at a = " + std::to_string(s.a) + " with kernel " + delta,
+    res.marker_inset = ib::stresslet_marker_inset(*gap, res.a);
+    if (!(res.marker_inset >= 0.0))
+      q.fail("marker_inset", "the stresslet's inset has no solution at a = " + std::to_string(res.a) + " with kernel " + delta,
              "a >= " + std::to_string(ib::stresslet_inset_min_radius(*gap)) + ", or a number in [0, 2]");
   }
-  if (s.marker_inset > 0.25 * s.a)
-    q.fail("marker_inset", "marker inset " + std::to_string(s.marker_inset) + " is more than a quarter of a", "[0, a/4]");
+  if (res.marker_inset > 0.25 * res.a)
+    q.fail("marker_inset", "marker inset " + std::to_string(res.marker_inset) + " is more than a quarter of a", "[0, a/4]");
 }
 
 // resolution: the 2D Kelvin-Voigt step (31) and the 3D fluid's relaxation rates.
-void read_viscous_steps(ObjectReader& q, Scene& s, const SceneDefaults& defaults) {
+void read_viscous_steps(ObjectReader& q, int dim, Scene::Resolution& res, const SceneDefaults& defaults) {
   using enum KelvinVoigtStep;
   // exact_mobility by default in 2D (physics version 6): stable at any eta, and the eta <= 12
   // members move by less than 0.5 % (docs/findings/kelvin_voigt_2d.md).
-  s.kelvin_voigt_step = q.choice<KelvinVoigtStep>("kelvin_voigt_step", defaults.kelvin_voigt_step,
+  res.kelvin_voigt_step = q.choice<KelvinVoigtStep>("kelvin_voigt_step", defaults.kelvin_voigt_step,
                                                   {approximate_mobility, exact_mobility});
-  if (s.dim == 3 && s.kelvin_voigt_step != approximate_mobility)
+  if (dim == 3 && res.kelvin_voigt_step != approximate_mobility)
     q.fail("kelvin_voigt_step",
-           "Kelvin-Voigt step \"" + choice_name(s.kelvin_voigt_step) +
+           "Kelvin-Voigt step \"" + choice_name(res.kelvin_voigt_step) +
                "\" is the 2D membrane's (the 3D membrane's viscosity is the standard linear solid)",
            "\"approximate_mobility\" in 3D");
   // The text's MRT, or TRT with the odd moments at Lambda = 3/16, which keeps a viscosity
   // contrast independent of tau. 3D only: the text's D2Q9 rates are a TRT already (q by (9) is
   // Lambda = 1/12 at every s_nu).
   using enum lbm::CollisionModel;
-  s.collision = q.choice<lbm::CollisionModel>("collision", defaults.collision, {mrt, trt});
-  if (s.dim == 2 && s.collision != mrt)
+  res.collision = q.choice<lbm::CollisionModel>("collision", defaults.collision, {mrt, trt});
+  if (dim == 2 && res.collision != mrt)
     q.fail("collision", "the 2D rates (9) are a two-relaxation-time collision already (Lambda = 1/12)", "\"mrt\" in 2D");
 }
 
 void read_resolution(ObjectReader& r, Scene& s, const SceneDefaults& defaults) {
-  json res = r.object("resolution", false);
-  ObjectReader q(res, r.source(), r.child_path("resolution"),
+  json block = r.object("resolution", false);
+  ObjectReader q(block, r.source(), r.child_path("resolution"),
                  {"a", "domain", "segments", "mesh_level", "tau", "kernel", "precision", "membrane_update",
                   "marker_inset", "kelvin_voigt_step", "collision"});
-  read_lattice(q, res, s, defaults);
-  read_delta_and_update(q, s, defaults);
-  read_marker_inset(q, res, s, defaults);
-  read_viscous_steps(q, s, defaults);
+  read_lattice(q, block, s.dim, s.resolution, defaults);
+  read_delta_and_update(q, s.dim, s.resolution, defaults);
+  read_marker_inset(q, block, s.dim, s.resolution, defaults);
+  read_viscous_steps(q, s.dim, s.resolution, defaults);
   q.refuse_unknown();
 }
 
-void read_protocol_and_output(ObjectReader& r, Scene& s) {
+// protocol: the shear phase, then the recovery.
+void read_protocol(ObjectReader& r, Scene::Protocol& protocol) {
   const std::string& source = r.source();
-  {
-    json proto = r.object("protocol", true);
-    ObjectReader p(proto, source, "protocol", {"shear", "recover"});
-    s.shear = read_phase(p.object("shear", true), source, "protocol.shear", true);
-    s.recover = read_phase(p.object("recover", true), source, "protocol.recover", false);
-    p.refuse_unknown();
-  }
+  json proto = r.object("protocol", true);
+  ObjectReader p(proto, source, "protocol", {"shear", "recover"});
+  protocol.shear = read_phase(p.object("shear", true), source, "protocol.shear", true);
+  protocol.recover = read_phase(p.object("recover", true), source, "protocol.recover", false);
+  p.refuse_unknown();
+}
+
+// output: the rows' spacing, the stored shapes and the snapshots.
+void read_output(ObjectReader& r, Scene::Output& output) {
   json out = r.object("output", false);
-  ObjectReader o(out, source, "output", {"interval_kt", "shapes_at_kt", "snapshots"});
-  s.output_interval_kt = o.number("interval_kt", 0.05, 0.0, 10.0, true);
-  s.shapes_at_kt = o.numbers("shapes_at_kt", {}, 0.0, 1e5, 0, 10000);
-  s.snapshots = o.choice<Snapshots>("snapshots", Snapshots::none, {Snapshots::none, Snapshots::vtk});
+  ObjectReader o(out, r.source(), "output", {"interval_kt", "shapes_at_kt", "snapshots"});
+  output.interval_kt = o.number("interval_kt", 0.05, 0.0, 10.0, true);
+  output.shapes_at_kt = o.numbers("shapes_at_kt", {}, 0.0, 1e5, 0, 10000);
+  output.snapshots = o.choice<Snapshots>("snapshots", Snapshots::none, {Snapshots::none, Snapshots::vtk});
   o.refuse_unknown();
 }
 
@@ -500,7 +502,8 @@ Scene Scene::from_json(const json& j, const std::string& source) {
   read_physical(r, s);
   read_power_law(r, s, defaults);
   read_resolution(r, s, defaults);
-  read_protocol_and_output(r, s);
+  read_protocol(r, s.protocol);
+  read_output(r, s.output);
   r.refuse_unknown();
   ignore_other_dimension(s);
   check_run_bounds(s, source);
@@ -527,6 +530,80 @@ Scene Scene::load(const std::string& path) {
 }
 
 namespace {
+// The writers, one per section. Version 5's canonical text is kept key for key: a key it did
+// not know, or that held its default, is left out, so the ids of its members stay
+// (Scene::omitted_defaults()). Later versions write every key: a key's default may change with
+// the physics version, and the id must say what ran. Each value is written with its C++ type,
+// so "a": 10 and "a": 10.0 give the same canonical text.
+
+// The capsule's keys, at the top level.
+void write_capsule(const Scene& s, json& j) {
+  j["dim"] = s.dim;
+  j["shape"] = choice_name(s.shape);
+  j["law"] = choice_name(s.law);
+  j["C"] = s.C;
+  j["Re"] = s.Re;
+  j["Ca"] = s.Ca;
+  j["E_b"] = s.E_b;
+  j["V"] = s.V;
+  j["eta"] = s.eta;
+  j["G"] = s.G;
+  j["c0"] = s.c0;
+  j["reference_case"] = choice_name(s.reference_case);
+  j["volume_penalty"] = s.volume_penalty;
+}
+
+json power_law_json(const Scene::PowerLaw& p, PhysicsVersion version) {
+  json j = {{"K", p.K}, {"n", p.n}};
+  if (version != PhysicsVersion::v5 || p.model != PowerLawModel::fluid_shell) j["model"] = choice_name(p.model);
+  return j;
+}
+
+json conventions_json(const Scene::Conventions& c, PhysicsVersion version) {
+  json j = {{"sls_viscosity", choice_name(c.sls_viscosity)}, {"E_b_2d", choice_name(c.E_b_2d)}};
+  if (version != PhysicsVersion::v5 || c.biconcave_2d != BiconcaveSize2d::equivalent)
+    j["biconcave_2d"] = choice_name(c.biconcave_2d);
+  return j;
+}
+
+// Version 5's resolution: the keys it knew, the later ones only where off their default.
+json resolution_json_v5(const Scene::Resolution& r, int dim) {
+  json j = {{"a", r.a}, {"domain", r.domain}, {"segments", r.segments},
+            {"mesh_level", r.mesh_level}, {"tau", r.tau}, {"kernel", choice_name(r.delta)}};
+  if (dim == 3 || r.precision != lbm::Precision::double_precision) j["precision"] = choice_name(r.precision);
+  if (r.membrane_update != ib::MembraneUpdate::euler) j["membrane_update"] = choice_name(r.membrane_update);
+  if (r.marker_inset_rule != MarkerInsetRule::given) j["marker_inset"] = choice_name(r.marker_inset_rule);
+  else if (r.marker_inset != 0.0) j["marker_inset"] = r.marker_inset;
+  if (r.kelvin_voigt_step != KelvinVoigtStep::approximate_mobility)
+    j["kelvin_voigt_step"] = choice_name(r.kelvin_voigt_step);
+  if (r.collision != lbm::CollisionModel::mrt) j["collision"] = choice_name(r.collision);
+  return j;
+}
+
+json resolution_json(const Scene::Resolution& r, int dim, PhysicsVersion version) {
+  if (version == PhysicsVersion::v5) return resolution_json_v5(r, dim);
+  json j = {{"a", r.a}, {"domain", r.domain}, {"segments", r.segments},
+            {"mesh_level", r.mesh_level}, {"tau", r.tau}, {"kernel", choice_name(r.delta)},
+            {"precision", choice_name(r.precision)}, {"membrane_update", choice_name(r.membrane_update)},
+            {"kelvin_voigt_step", choice_name(r.kelvin_voigt_step)}, {"collision", choice_name(r.collision)}};
+  // The rule's name where a rule set it (its value follows from a and the delta), else the number.
+  if (r.marker_inset_rule == MarkerInsetRule::given) j["marker_inset"] = r.marker_inset;
+  else j["marker_inset"] = choice_name(r.marker_inset_rule);
+  return j;
+}
+
+// Written only when given, so the ids of scenes without it stay; one bending key, the one given.
+json physical_json(const PhysicalCell& c) {
+  json j = {{"radius_um", c.radius_um}, {"shear_modulus_uN_per_m", c.shear_modulus_uN_per_m},
+            {"plasma_viscosity_mPa_s", c.plasma_viscosity_mPa_s}, {"cytoplasm_viscosity_mPa_s", c.cytoplasm_viscosity_mPa_s},
+            {"membrane_viscosity_uN_s_per_m", c.membrane_viscosity_uN_s_per_m}, {"shear_rate_per_s", c.shear_rate_per_s},
+            {"density_kg_per_m3", c.density_kg_per_m3}};
+  if (c.bending_modulus_kT > 0) j["bending_modulus_kT"] = c.bending_modulus_kT;
+  else j["bending_modulus_J"] = c.bending_modulus_J;
+  if (c.temperature_K > 0) j["temperature_K"] = c.temperature_K;
+  return j;
+}
+
 json phase_json(const PhaseSpec& p, bool shear) {
   json j = {{"until", choice_name(p.until)}, {"kt", p.kt}, {"value", p.value}, {"tolerance", p.tolerance},
             {"window_kt", p.window_kt}, {"max_kt", p.max_kt}};
@@ -536,79 +613,25 @@ json phase_json(const PhaseSpec& p, bool shear) {
   if (shear && p.after_kt > 0) j["after_kt"] = p.after_kt;
   return j;
 }
+
+json protocol_json(const Scene::Protocol& p) {
+  return {{"shear", phase_json(p.shear, true)}, {"recover", phase_json(p.recover, false)}};
+}
+
+json output_json(const Scene::Output& o) {
+  return {{"interval_kt", o.interval_kt}, {"shapes_at_kt", o.shapes_at_kt}, {"snapshots", choice_name(o.snapshots)}};
+}
 }  // namespace
 
 json Scene::to_json() const {
   json j;
-  j["dim"] = dim;
-  j["shape"] = choice_name(shape);
-  j["law"] = choice_name(law);
-  j["C"] = C;
-  j["Re"] = Re;
-  j["Ca"] = Ca;
-  j["E_b"] = E_b;
-  j["V"] = V;
-  j["eta"] = eta;
-  j["G"] = G;
-  j["c0"] = c0;
-  j["reference_case"] = choice_name(reference_case);
-  j["volume_penalty"] = volume_penalty;
-  if (physics_version == PhysicsVersion::v5) {
-    // Version 5's canonical text, key for key: a key it did not know, or that held its
-    // default, is left out, so the ids of its members stay (omitted_defaults()).
-    j["power_law"] = {{"K", power_law_K}, {"n", power_law_n}};
-    if (power_law_model != PowerLawModel::fluid_shell) j["power_law"]["model"] = choice_name(power_law_model);
-    j["conventions"] = {{"sls_viscosity", choice_name(sls_viscosity)}, {"E_b_2d", choice_name(E_b_2d)}};
-    if (biconcave_2d != BiconcaveSize2d::equivalent) j["conventions"]["biconcave_2d"] = choice_name(biconcave_2d);
-    j["resolution"] = {{"a", a}, {"domain", domain}, {"segments", segments},
-                       {"mesh_level", mesh_level}, {"tau", tau}, {"kernel", choice_name(delta)}};
-    if (dim == 3 || precision != lbm::Precision::double_precision) j["resolution"]["precision"] = choice_name(precision);
-    if (membrane_update != ib::MembraneUpdate::euler) j["resolution"]["membrane_update"] = choice_name(membrane_update);
-    if (marker_inset_rule != MarkerInsetRule::given) j["resolution"]["marker_inset"] = choice_name(marker_inset_rule);
-    else if (marker_inset != 0.0) j["resolution"]["marker_inset"] = marker_inset;
-    if (kelvin_voigt_step != KelvinVoigtStep::approximate_mobility)
-      j["resolution"]["kelvin_voigt_step"] = choice_name(kelvin_voigt_step);
-    if (collision != lbm::CollisionModel::mrt) j["resolution"]["collision"] = choice_name(collision);
-  } else {
-    // Every key: a key's default may change with the physics version, and the id must say
-    // what ran.
-    j["power_law"] = {{"K", power_law_K}, {"n", power_law_n}, {"model", choice_name(power_law_model)}};
-    j["conventions"] = {{"sls_viscosity", choice_name(sls_viscosity)}, {"E_b_2d", choice_name(E_b_2d)},
-                        {"biconcave_2d", choice_name(biconcave_2d)}};
-    j["resolution"] = {{"a", a}, {"domain", domain}, {"segments", segments},
-                       {"mesh_level", mesh_level}, {"tau", tau}, {"kernel", choice_name(delta)},
-                       {"precision", choice_name(precision)}, {"membrane_update", choice_name(membrane_update)},
-                       {"kelvin_voigt_step", choice_name(kelvin_voigt_step)}, {"collision", choice_name(collision)}};
-    // The rule's name where a rule set it (its value follows from a and the delta), else the number.
-    if (marker_inset_rule == MarkerInsetRule::given) j["resolution"]["marker_inset"] = marker_inset;
-    else j["resolution"]["marker_inset"] = choice_name(marker_inset_rule);
-  }
-  if (physical) {
-    // Written only when given, so the ids of scenes without it stay; one bending key, the one given.
-    const PhysicalCell& c = *physical;
-    json& ph = j["physical"];
-    ph = {{"radius_um", c.radius_um}, {"shear_modulus_uN_per_m", c.shear_modulus_uN_per_m},
-          {"plasma_viscosity_mPa_s", c.plasma_viscosity_mPa_s}, {"cytoplasm_viscosity_mPa_s", c.cytoplasm_viscosity_mPa_s},
-          {"membrane_viscosity_uN_s_per_m", c.membrane_viscosity_uN_s_per_m}, {"shear_rate_per_s", c.shear_rate_per_s},
-          {"density_kg_per_m3", c.density_kg_per_m3}};
-    if (c.bending_modulus_kT > 0) ph["bending_modulus_kT"] = c.bending_modulus_kT;
-    else ph["bending_modulus_J"] = c.bending_modulus_J;
-    if (c.temperature_K > 0) ph["temperature_K"] = c.temperature_K;
-  }
-  j["protocol"] = {{"shear", phase_json(shear, true)}, {"recover", phase_json(recover, false)}};
-  j["output"] = {{"interval_kt", output_interval_kt}, {"shapes_at_kt", shapes_at_kt},
-                 {"snapshots", choice_name(snapshots)}};
-  // Doubles that happen to be integral must still be written as doubles so that
-  // "a": 10 and "a": 10.0 give the same canonical text.
-  std::function<void(json&)> as_float = [&](json& v) {
-    if (v.is_number_integer()) v = static_cast<double>(v.get<long long>());
-    else if (v.is_object() || v.is_array())
-      for (auto& e : v) as_float(e);
-  };
-  for (auto it = j.begin(); it != j.end(); ++it)
-    if (it.key() != "dim") as_float(it.value());
-  j["resolution"]["segments"] = segments;
-  j["resolution"]["mesh_level"] = mesh_level;
+  write_capsule(*this, j);
+  j["power_law"] = power_law_json(power_law, physics_version);
+  j["conventions"] = conventions_json(conventions, physics_version);
+  j["resolution"] = resolution_json(resolution, dim, physics_version);
+  if (physical) j["physical"] = physical_json(*physical);
+  j["protocol"] = protocol_json(protocol);
+  j["output"] = output_json(output);
   // The member id hashes the scene without this key and with the version after it
   // (study/campaign/member_id.cpp); it is here so that the solver runs what study planned.
   j["physics_version"] = choice_name(physics_version);
@@ -634,7 +657,7 @@ const std::map<std::string, json>& Scene::omitted_defaults(int dim) {
 
 std::vector<int> Scene::grid() const {
   std::vector<int> n(3, 1);
-  for (int d = 0; d < dim; ++d) n[d] = static_cast<int>(std::lround(domain[d] * a));
+  for (int d = 0; d < dim; ++d) n[d] = static_cast<int>(std::lround(resolution.domain[d] * resolution.a));
   return n;
 }
 

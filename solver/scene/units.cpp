@@ -26,9 +26,9 @@ namespace {
 // a = 10 (docs/guide/model.md "The 2D capsule").
 double choose_tau_2d(const Scene& scene) {
   constexpr double nu_default = 1.0 / 6.0, S_max = 0.04, B_max = 0.12, tau_min = 0.52;
-  double nu = std::min(nu_default, S_max * scene.a * scene.Ca / scene.Re);
+  double nu = std::min(nu_default, S_max * scene.resolution.a * scene.Ca / scene.Re);
   const double E_b = dimensionless_E_b(scene);
-  if (E_b > 0) nu = std::min(nu, B_max * scene.Ca / (E_b * scene.a * scene.Re));
+  if (E_b > 0) nu = std::min(nu, B_max * scene.Ca / (E_b * scene.resolution.a * scene.Re));
   return std::max(tau_min, 0.5 + 3.0 * nu);
 }
 
@@ -70,9 +70,9 @@ double choose_tau_2d(const Scene& scene) {
 double choose_tau_3d(const Scene& scene) {
   constexpr double nu_accurate = 1.0 / 3.0, nu_contrast = 1.0 / 6.0, S_max = 0.17, B_max = 0.17, tau_min = 0.52;
   const double M_max = maxwell_stiffness_bound(scene);
-  double nu = (scene.V > 1.0 && scene.collision != lbm::CollisionModel::trt) ? nu_contrast : nu_accurate;
-  nu = std::min(nu, S_max * scene.a * scene.Ca / scene.Re);
-  if (scene.E_b > 0) nu = std::min(nu, B_max * scene.Ca / (scene.E_b * scene.a * scene.Re));
+  double nu = (scene.V > 1.0 && scene.resolution.collision != lbm::CollisionModel::trt) ? nu_contrast : nu_accurate;
+  nu = std::min(nu, S_max * scene.resolution.a * scene.Ca / scene.Re);
+  if (scene.E_b > 0) nu = std::min(nu, B_max * scene.Ca / (scene.E_b * scene.resolution.a * scene.Re));
   // The Maxwell element's stiffness number M grows with nu (E_m ~ nu^2): lowered by bisection
   // until M <= M_max. Where even tau_min exceeds it (the Kelvin-Voigt limit, M -> eta a: no tau
   // helps), tau_min.
@@ -112,14 +112,14 @@ double shear_modulus_3d(const Scene& s, const Units& u) {
 
 MaxwellElement3d maxwell_element_3d(const Scene& s, const Units& u) {
   MaxwellElement3d m;
-  const bool power_law_membrane = s.power_law_K > 0 && s.power_law_model == PowerLawModel::membrane;
+  const bool power_law_membrane = s.power_law.K > 0 && s.power_law.model == PowerLawModel::membrane;
   if (s.dim != 3 || !(s.eta > 0 || power_law_membrane)) return m;
   m.present = true;
   m.power_law = power_law_membrane;
   m.E_m = s.G * shear_modulus_3d(s, u);
   // rho = 1, so mu_a = nu; u.mu_s = eta a mu_a (36).
-  const double mu = power_law_membrane ? s.power_law_K * s.a * u.nu
-                                       : (s.sls_viscosity == SlsViscosity::dissertation ? u.mu_s / 3.0 : u.mu_s);
+  const double mu = power_law_membrane ? s.power_law.K * s.resolution.a * u.nu
+                                       : (s.conventions.sls_viscosity == SlsViscosity::dissertation ? u.mu_s / 3.0 : u.mu_s);
   m.tau_m = mu / m.E_m;
   return m;
 }
@@ -132,22 +132,22 @@ double maxwell_stiffness_number(const Scene& s, double tau) {
   return m.E_m * m.tau_m * (1.0 - std::exp(-1.0 / m.tau_m)) / u.nu;
 }
 
-double maxwell_stiffness_bound(const Scene& s) { return ib::maxwell_stiffness_bound(s.delta); }
+double maxwell_stiffness_bound(const Scene& s) { return ib::maxwell_stiffness_bound(s.resolution.delta); }
 
 double dimensionless_E_b(const Scene& s) {
-  // The text's 2D reading (Scene::E_b_2d): E_B = E_b a_text E_s with a_text = 0.5 in its units
+  // The text's 2D reading (SceneConventions::E_b_2d): E_B = E_b a_text E_s with a_text = 0.5 in its units
   // of h = 0.05 (Sec. 2.4), so E_B / (a^2 E_s) = E_b / a_text = 2 E_b.
-  if (s.dim == 2 && s.E_b_2d == BendingConvention2d::dissertation) return 2.0 * s.E_b;
+  if (s.dim == 2 && s.conventions.E_b_2d == BendingConvention2d::dissertation) return 2.0 * s.E_b;
   return s.E_b;
 }
 
 double membrane_bending_modulus(const Scene& s, const Units& u) {
-  const double r_m = s.a - s.marker_inset;
+  const double r_m = s.resolution.a - s.resolution.marker_inset;
   return dimensionless_E_b(s) * r_m * r_m * u.E_s;
 }
 
 double choose_tau(const Scene& scene) {
-  if (scene.tau > 0) return scene.tau;
+  if (scene.resolution.tau > 0) return scene.resolution.tau;
   return scene.dim == 2 ? choose_tau_2d(scene) : choose_tau_3d(scene);
 }
 
@@ -156,13 +156,13 @@ Units units_for(const Scene& s, double tau) {
   Units u;
   u.tau = tau;
   u.nu = (tau - 0.5) / 3.0;                  // (8), (13)
-  u.shear_rate = s.Re * u.nu / (s.a * s.a);  // Re = k a^2 / nu
-  u.E_s = u.nu * u.shear_rate * s.a / s.Ca;  // (34) with mu_a = rho nu, rho = 1
+  u.shear_rate = s.Re * u.nu / (s.resolution.a * s.resolution.a);  // Re = k a^2 / nu
+  u.E_s = u.nu * u.shear_rate * s.resolution.a / s.Ca;  // (34) with mu_a = rho nu, rho = 1
   // (35) prints E_b = E_B / (a E_s), which is not dimensionless (E_B is an energy, E_s an
   // energy per area) and would make the physics depend on the resolution a. Sui et al.
   // (2008), whom Sec. 2.4.2 validates against with the same E_b values, use E_B / (a^2 E_s).
-  u.E_B = dimensionless_E_b(s) * s.a * s.a * u.E_s;
-  u.mu_s = s.eta * s.a * u.nu;               // (36)
+  u.E_B = dimensionless_E_b(s) * s.resolution.a * s.resolution.a * u.E_s;
+  u.mu_s = s.eta * s.resolution.a * u.nu;               // (36)
   u.nu_inside = s.V * u.nu;
   u.steps_per_kt = 1.0 / u.shear_rate;
   return u;

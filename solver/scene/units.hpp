@@ -18,7 +18,7 @@ struct Units {
 };
 
 // E_B / (a^2 E_s) of the scene: its E_b, or 2 E_b for a 2D scene in the dissertation's
-// convention (Scene::E_b_2d).
+// convention (SceneConventions::E_b_2d).
 double dimensionless_E_b(const Scene& scene);
 
 // The bending modulus of the membrane the solver builds: its nodes on the radius

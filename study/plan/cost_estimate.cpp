@@ -72,7 +72,7 @@ CostEstimate estimate_cost(const nlohmann::json& canonical_scene, const PhaseLen
     c.kt_is_bound = true;
     return p.max_kt;
   };
-  c.kt_span = phase_span(scene.shear) + phase_span(scene.recover);
+  c.kt_span = phase_span(scene.protocol.shear) + phase_span(scene.protocol.recover);
   // A phase that ends on a condition: as long as its nearest finished neighbours ran, when
   // there are any (phase_lengths.hpp), else the default members' measured end.
   const auto expected = [&](const PhaseSpec& p, bool recovery) {
@@ -80,24 +80,24 @@ CostEstimate estimate_cost(const nlohmann::json& canonical_scene, const PhaseLen
       if (const auto kt = lengths->expected_kt(canonical_scene, recovery)) return *kt;
     return expected_phase_kt(p, recovery);
   };
-  const bool no_recovery = scene.recover.until == StopCondition::time && scene.recover.kt <= 0;
-  c.expected_kt = expected(scene.shear, false) + (no_recovery ? 0.0 : expected(scene.recover, true));
+  const bool no_recovery = scene.protocol.recover.until == StopCondition::time && scene.protocol.recover.kt <= 0;
+  c.expected_kt = expected(scene.protocol.shear, false) + (no_recovery ? 0.0 : expected(scene.protocol.recover, true));
   c.steps_per_kt = units_for(scene, choose_tau(scene)).steps_per_kt;  // the tau the solver will run
   const double nodes = static_cast<double>(c.nodes);
   if (scene.dim == 2) {
     c.fluid_seconds_per_step = nodes / (nodes <= kD2Q9CacheNodes ? kD2Q9CachedRate : kD2Q9Rate);
-    c.membrane_seconds_per_step = scene.segments * (k2DPerSegment + (scene.V != 1.0 ? k2DContrastPerSegment : 0.0) +
+    c.membrane_seconds_per_step = scene.resolution.segments * (k2DPerSegment + (scene.V != 1.0 ? k2DContrastPerSegment : 0.0) +
                                                     (scene.eta > 0 ? k2DKelvinVoigtPerSegment : 0.0));
   } else {
-    c.fluid_seconds_per_step = nodes / d3q19_rate(nodes, scene.precision == lbm::Precision::single_precision);
+    c.fluid_seconds_per_step = nodes / d3q19_rate(nodes, scene.resolution.precision == lbm::Precision::single_precision);
     c.membrane_thread_efficiency = k3DMembraneThreadEfficiency;
-    const double vertices = 10.0 * std::pow(4.0, scene.mesh_level) + 2.0;
-    const double support = ib::delta_support_nodes(scene.delta, 3);
+    const double vertices = 10.0 * std::pow(4.0, scene.resolution.mesh_level) + 2.0;
+    const double support = ib::delta_support_nodes(scene.resolution.delta, 3);
     double per_vertex = k3DCouplingPerVertex * support / 64.0 + k3DElasticPerVertex;
-    const bool membrane_power_law = scene.power_law_K > 0 && scene.power_law_model == PowerLawModel::membrane;
+    const bool membrane_power_law = scene.power_law.K > 0 && scene.power_law.model == PowerLawModel::membrane;
     if (scene.eta > 0 || membrane_power_law) per_vertex += k3DSlsPerVertex;  // the power law's own SLS step (not measured apart)
     if (scene.E_b > 0 || scene.volume_penalty > 0) per_vertex += k3DCurvaturePerVertex;
-    if (scene.power_law_K > 0 && !membrane_power_law) per_vertex += k3DPowerLawPerVertex;
+    if (scene.power_law.K > 0 && !membrane_power_law) per_vertex += k3DPowerLawPerVertex;
     if (scene.V != 1.0) per_vertex += k3DContrastPerVertex;
     c.membrane_seconds_per_step = vertices * per_vertex;
   }

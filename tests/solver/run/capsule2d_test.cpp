@@ -321,7 +321,7 @@ TEST_CASE("single precision is selectable in a 2D scene and agrees with double",
   const double D_double = steady_D(scene_of(j), 1.0);
   j["resolution"]["precision"] = "single";
   const Scene s = scene_of(j);
-  REQUIRE(s.precision == capsule::lbm::Precision::single_precision);
+  REQUIRE(s.resolution.precision == capsule::lbm::Precision::single_precision);
   const double D_single = steady_D(s, 1.0);
   INFO("D_xy double " << D_double << " single " << D_single);
   CHECK(D_double > 0.01);
@@ -344,15 +344,15 @@ TEST_CASE("resolution.marker_inset in 2D: the nodes on a - inset, bending that o
   };
   nlohmann::json j = circle_scene(10, 0.04, 0.05);
   const Scene on_a = scene_of(j);
-  CHECK(on_a.marker_inset == 0.0);
+  CHECK(on_a.resolution.marker_inset == 0.0);
   CHECK(mean_radius(on_a) == Approx(10.0).epsilon(1e-3));  // the polygon's vertices lie on the circle
   j["resolution"]["marker_inset"] = 0.5;
   CHECK(mean_radius(scene_of(j)) == Approx(9.5).epsilon(1e-3));
   // The rule: r_m + d_S(r_m) = a with the 2D gap of peskin4, 0.641 at a = 10.
   j["resolution"]["marker_inset"] = "stresslet";
   const Scene rule = scene_of(j);
-  CHECK(rule.marker_inset == Approx(0.6407).margin(1e-4));
-  CHECK(mean_radius(rule) == Approx(10.0 - rule.marker_inset).epsilon(1e-3));
+  CHECK(rule.resolution.marker_inset == Approx(0.6407).margin(1e-4));
+  CHECK(mean_radius(rule) == Approx(10.0 - rule.resolution.marker_inset).epsilon(1e-3));
   // The member file records the inset and E_B = E_b r_m^2 E_s.
   const fs::path dir = temp_dir();
   j["resolution"]["marker_inset"] = 0.5;

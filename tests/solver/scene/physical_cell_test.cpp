@@ -41,7 +41,7 @@ TEST_CASE("a physical cell gives the groups (34)-(36) computed by hand", "[scene
   CHECK(s.eta == Approx(0.6e-6 / (2.82e-6 * 1.2e-3)).epsilon(1e-12));
   // The cell's own Re = 1000 * 180 * 2.82e-6^2 / 1.2e-3 = 1.19e-3 is below the default 0.05,
   // which the lattice runs at.
-  const capsule::PhysicalGroups g = capsule::physical_groups(*s.physical, s.law, s.sls_viscosity);
+  const capsule::PhysicalGroups g = capsule::physical_groups(*s.physical, s.law, s.conventions.sls_viscosity);
   CHECK(g.Re == Approx(1000 * 180 * 2.82e-6 * 2.82e-6 / 1.2e-3).epsilon(1e-12));
   CHECK(s.Re == 0.05);
   CHECK(g.time_unit_s == Approx(1.0 / 180));

@@ -19,9 +19,9 @@ json minimal_2d() {
 TEST_CASE("a minimal scene gets the documented defaults", "[scene]") {
   Scene s = Scene::from_json(minimal_2d(), "t.json");
   CHECK(s.Re == 0.05);
-  CHECK(s.a == 10);
-  CHECK(s.domain == std::vector<double>{16, 12});
-  CHECK(s.segments == 140);
+  CHECK(s.resolution.a == 10);
+  CHECK(s.resolution.domain == std::vector<double>{16, 12});
+  CHECK(s.resolution.segments == 140);
   CHECK(capsule::choice_name(s.law) == "hooke");
   CHECK(s.grid() == std::vector<int>{160, 120, 1});
   json j = minimal_2d();
@@ -30,37 +30,37 @@ TEST_CASE("a minimal scene gets the documented defaults", "[scene]") {
   Scene t = Scene::from_json(j, "t.json");
   CHECK(capsule::choice_name(t.law) == "skalak");
   // Physics version 6: roma3 with the stresslet's inset, trt; version 5 kept peskin4 on a, mrt.
-  CHECK(capsule::choice_name(t.delta) == "roma3");
-  CHECK(capsule::choice_name(t.marker_inset_rule) == "stresslet");
-  CHECK(t.marker_inset == Approx(0.4287).margin(1e-4));
-  CHECK(capsule::choice_name(t.collision) == "trt");
-  CHECK(capsule::choice_name(t.power_law_model) == "membrane");
-  CHECK(capsule::choice_name(s.kelvin_voigt_step) == "exact_mobility");
+  CHECK(capsule::choice_name(t.resolution.delta) == "roma3");
+  CHECK(capsule::choice_name(t.resolution.marker_inset_rule) == "stresslet");
+  CHECK(t.resolution.marker_inset == Approx(0.4287).margin(1e-4));
+  CHECK(capsule::choice_name(t.resolution.collision) == "trt");
+  CHECK(capsule::choice_name(t.power_law.model) == "membrane");
+  CHECK(capsule::choice_name(s.resolution.kelvin_voigt_step) == "exact_mobility");
   j["resolution"] = {{"kernel", "peskin4"}};
-  CHECK(capsule::choice_name(Scene::from_json(j, "t.json").delta) == "peskin4");
-  CHECK(Scene::from_json(j, "t.json").marker_inset == Approx(0.5943).margin(1e-4));
+  CHECK(capsule::choice_name(Scene::from_json(j, "t.json").resolution.delta) == "peskin4");
+  CHECK(Scene::from_json(j, "t.json").resolution.marker_inset == Approx(0.5943).margin(1e-4));
   json v5 = j;
   v5["physics_version"] = "5";
   v5["resolution"] = json::object();
   const Scene old = Scene::from_json(v5, "t.json");
-  CHECK(capsule::choice_name(old.delta) == "peskin4");
-  CHECK(old.marker_inset == 0.0);
-  CHECK(capsule::choice_name(old.collision) == "mrt");
-  CHECK(capsule::choice_name(old.power_law_model) == "fluid_shell");
+  CHECK(capsule::choice_name(old.resolution.delta) == "peskin4");
+  CHECK(old.resolution.marker_inset == 0.0);
+  CHECK(capsule::choice_name(old.resolution.collision) == "mrt");
+  CHECK(capsule::choice_name(old.power_law.model) == "fluid_shell");
   CHECK(t.grid() == std::vector<int>{100, 100, 80});
-  CHECK(capsule::choice_name(s.sls_viscosity) == "physical");
-  CHECK(capsule::choice_name(s.E_b_2d) == "dimensionless");
+  CHECK(capsule::choice_name(s.conventions.sls_viscosity) == "physical");
+  CHECK(capsule::choice_name(s.conventions.E_b_2d) == "dimensionless");
   CHECK(s.to_json()["conventions"] == json{{"sls_viscosity", "physical"}, {"E_b_2d", "dimensionless"}, {"biconcave_2d", "equivalent"}});
   json settled = minimal_2d();
   settled["protocol"]["recover"] = {{"until", "settled"}};
-  CHECK(Scene::from_json(settled, "t.json").recover.window_fraction == 0.5);
+  CHECK(Scene::from_json(settled, "t.json").protocol.recover.window_fraction == 0.5);
   json j3 = j;
   j3["conventions"] = {{"E_b_2d", "dissertation"}};
   CHECK_THROWS_WITH(Scene::from_json(j3, "t.json"), Catch::Contains("conventions.E_b_2d: the 2D bending convention"));
-  CHECK(capsule::choice_name(t.precision) == "single");  // 3D default (the precision comparison)
+  CHECK(capsule::choice_name(t.resolution.precision) == "single");  // 3D default (the precision comparison)
   // biconcave_2d: in version 5's canonical text only when set (member ids made before it
   // stay), always from version 6; refused where it means nothing.
-  CHECK(capsule::choice_name(s.biconcave_2d) == "equivalent");
+  CHECK(capsule::choice_name(s.conventions.biconcave_2d) == "equivalent");
   json s5 = minimal_2d();
   s5["physics_version"] = 5;
   CHECK(!Scene::from_json(s5, "t.json").to_json()["conventions"].contains("biconcave_2d"));
@@ -69,7 +69,7 @@ TEST_CASE("a minimal scene gets the documented defaults", "[scene]") {
   b["conventions"] = {{"biconcave_2d", "dissertation"}};
   const Scene sb = Scene::from_json(b, "t.json");
   CHECK(sb.to_json()["conventions"]["biconcave_2d"] == "dissertation");
-  CHECK(capsule::choice_name(Scene::from_json(sb.to_json(), "t.json").biconcave_2d) == "dissertation");
+  CHECK(capsule::choice_name(Scene::from_json(sb.to_json(), "t.json").conventions.biconcave_2d) == "dissertation");
   b["shape"] = "circle";
   CHECK_THROWS_WITH(Scene::from_json(b, "t.json"),
                     Catch::Contains("conventions.biconcave_2d") && Catch::Contains("2D biconcave capsule only"));
@@ -81,16 +81,16 @@ TEST_CASE("a Scene built in code has the parser's defaults of a 2D scene of toda
   const Scene parsed = Scene::from_json(minimal_2d(), "t.json");
   CHECK(in_code.dim == parsed.dim);
   CHECK(in_code.physics_version == parsed.physics_version);
-  CHECK(in_code.delta == parsed.delta);
-  CHECK(in_code.collision == parsed.collision);
-  CHECK(in_code.precision == parsed.precision);
-  CHECK(in_code.power_law_model == parsed.power_law_model);
-  CHECK(in_code.kelvin_voigt_step == parsed.kelvin_voigt_step);
-  CHECK(in_code.marker_inset_rule == parsed.marker_inset_rule);
-  CHECK(in_code.membrane_update == parsed.membrane_update);
-  CHECK(in_code.domain == parsed.domain);
-  CHECK(in_code.segments == parsed.segments);
-  CHECK(in_code.mesh_level == parsed.mesh_level);
+  CHECK(in_code.resolution.delta == parsed.resolution.delta);
+  CHECK(in_code.resolution.collision == parsed.resolution.collision);
+  CHECK(in_code.resolution.precision == parsed.resolution.precision);
+  CHECK(in_code.power_law.model == parsed.power_law.model);
+  CHECK(in_code.resolution.kelvin_voigt_step == parsed.resolution.kelvin_voigt_step);
+  CHECK(in_code.resolution.marker_inset_rule == parsed.resolution.marker_inset_rule);
+  CHECK(in_code.resolution.membrane_update == parsed.resolution.membrane_update);
+  CHECK(in_code.resolution.domain == parsed.resolution.domain);
+  CHECK(in_code.resolution.segments == parsed.resolution.segments);
+  CHECK(in_code.resolution.mesh_level == parsed.resolution.mesh_level);
   // And each (version, dimension) row of the table is what the parser gives that scene.
   for (const auto version : {capsule::PhysicsVersion::current, capsule::PhysicsVersion::v5}) {
     for (const int dim : {2, 3}) {
@@ -103,13 +103,13 @@ TEST_CASE("a Scene built in code has the parser's defaults of a 2D scene of toda
       const Scene s = Scene::from_json(j, "t.json");
       const capsule::SceneDefaults d = capsule::scene_defaults(version, dim);
       INFO("physics version " << capsule::choice_name(version) << ", " << dim << "D");
-      CHECK(s.delta == d.delta);
-      CHECK(s.collision == d.collision);
-      CHECK(s.precision == d.precision);
-      CHECK(s.power_law_model == d.power_law_model);
-      CHECK(s.kelvin_voigt_step == d.kelvin_voigt_step);
-      CHECK(s.marker_inset_rule == d.marker_inset_rule);
-      CHECK(s.domain == d.domain);
+      CHECK(s.resolution.delta == d.delta);
+      CHECK(s.resolution.collision == d.collision);
+      CHECK(s.resolution.precision == d.precision);
+      CHECK(s.power_law.model == d.power_law_model);
+      CHECK(s.resolution.kelvin_voigt_step == d.kelvin_voigt_step);
+      CHECK(s.resolution.marker_inset_rule == d.marker_inset_rule);
+      CHECK(s.resolution.domain == d.domain);
     }
   }
 }
@@ -119,30 +119,30 @@ TEST_CASE("resolution.precision: 2D double by default (version 5 wrote only sing
   j3["dim"] = 3;
   j3["shape"] = "sphere";
   const Scene s3 = Scene::from_json(j3, "t.json");
-  CHECK(capsule::choice_name(s3.precision) == "single");
+  CHECK(capsule::choice_name(s3.resolution.precision) == "single");
   CHECK(s3.to_json()["resolution"]["precision"] == "single");
   j3["resolution"] = {{"precision", "double"}};
   const Scene d3 = Scene::from_json(j3, "t.json");
-  CHECK(capsule::choice_name(d3.precision) == "double");
+  CHECK(capsule::choice_name(d3.resolution.precision) == "double");
   CHECK(d3.to_json()["resolution"]["precision"] == "double");
   // The canonical text must run as what it says: it is the scene.json a member is run from.
-  CHECK(capsule::choice_name(Scene::from_json(d3.to_json(), "t.json").precision) == "double");
-  CHECK(capsule::choice_name(Scene::from_json(s3.to_json(), "t.json").precision) == "single");
+  CHECK(capsule::choice_name(Scene::from_json(d3.to_json(), "t.json").resolution.precision) == "double");
+  CHECK(capsule::choice_name(Scene::from_json(s3.to_json(), "t.json").resolution.precision) == "single");
 
   // Version 6 writes it always; version 5 left the 2D default out (its members' ids stay).
   CHECK(Scene::from_json(minimal_2d(), "t.json").to_json()["resolution"]["precision"] == "double");
   json j = minimal_2d();
   j["physics_version"] = "5";
   const Scene d = Scene::from_json(j, "t.json");
-  CHECK(capsule::choice_name(d.precision) == "double");
+  CHECK(capsule::choice_name(d.resolution.precision) == "double");
   CHECK_FALSE(d.to_json()["resolution"].contains("precision"));
   j["resolution"] = {{"precision", "double"}};
   CHECK(Scene::from_json(j, "t.json").to_json() == d.to_json());
   j["resolution"] = {{"precision", "single"}};
   const Scene s = Scene::from_json(j, "t.json");
-  CHECK(capsule::choice_name(s.precision) == "single");
+  CHECK(capsule::choice_name(s.resolution.precision) == "single");
   CHECK(s.to_json()["resolution"]["precision"] == "single");
-  CHECK(capsule::choice_name(Scene::from_json(s.to_json(), "t.json").precision) == "single");
+  CHECK(capsule::choice_name(Scene::from_json(s.to_json(), "t.json").resolution.precision) == "single");
   j["resolution"] = {{"precision", "half"}};
   CHECK_THROWS_AS(Scene::from_json(j, "t.json"), SceneError);
 }
@@ -154,7 +154,7 @@ TEST_CASE("resolution.membrane_update: euler by default (left out of version 5's
   CHECK(Scene::from_json(j3, "t.json").to_json()["resolution"]["membrane_update"] == "euler");
   j3["physics_version"] = "5";
   const Scene e = Scene::from_json(j3, "t.json");
-  CHECK(capsule::choice_name(e.membrane_update) == "euler");
+  CHECK(capsule::choice_name(e.resolution.membrane_update) == "euler");
   // Version 5 did not write the default, so the ids of members run before the key existed stay.
   CHECK_FALSE(e.to_json()["resolution"].contains("membrane_update"));
   j3["resolution"] = {{"membrane_update", "euler"}};
@@ -162,9 +162,9 @@ TEST_CASE("resolution.membrane_update: euler by default (left out of version 5's
   for (const std::string name : {"previous_velocity", "adams_bashforth2"}) {
     j3["resolution"] = {{"membrane_update", name}};
     const Scene s = Scene::from_json(j3, "t.json");
-    CHECK(capsule::choice_name(s.membrane_update) == name);
+    CHECK(capsule::choice_name(s.resolution.membrane_update) == name);
     CHECK(s.to_json()["resolution"]["membrane_update"] == name);
-    CHECK(capsule::choice_name(Scene::from_json(s.to_json(), "t.json").membrane_update) == name);  // runs as it says
+    CHECK(capsule::choice_name(Scene::from_json(s.to_json(), "t.json").resolution.membrane_update) == name);  // runs as it says
   }
   j3["resolution"] = {{"membrane_update", "runge_kutta4"}};
   CHECK_THROWS_WITH(Scene::from_json(j3, "t.json"),
@@ -181,14 +181,14 @@ TEST_CASE("resolution.marker_inset: the stresslet's rule by default in 3D (0 in 
   j3["shape"] = "sphere";
   // Version 6: the rule, written by its name; its value from a and the kernel.
   const Scene r = Scene::from_json(j3, "t.json");
-  CHECK(capsule::choice_name(r.marker_inset_rule) == "stresslet");
+  CHECK(capsule::choice_name(r.resolution.marker_inset_rule) == "stresslet");
   CHECK(r.to_json()["resolution"]["marker_inset"] == "stresslet");
-  CHECK(Scene::from_json(r.to_json(), "t.json").marker_inset == r.marker_inset);  // runs as it says
+  CHECK(Scene::from_json(r.to_json(), "t.json").resolution.marker_inset == r.resolution.marker_inset);  // runs as it says
   j3["resolution"] = {{"a", 5.0}, {"marker_inset", "stresslet"}};
-  CHECK(Scene::from_json(j3, "t.json").marker_inset == Approx(0.5263).margin(1e-4));
+  CHECK(Scene::from_json(j3, "t.json").resolution.marker_inset == Approx(0.5263).margin(1e-4));
   // A kernel whose shell was not measured gets 0 by default and refuses the rule.
   j3["resolution"] = {{"kernel", "linear2"}};
-  CHECK(Scene::from_json(j3, "t.json").marker_inset == 0.0);
+  CHECK(Scene::from_json(j3, "t.json").resolution.marker_inset == 0.0);
   CHECK(Scene::from_json(j3, "t.json").to_json()["resolution"]["marker_inset"] == 0.0);
   j3["resolution"] = {{"kernel", "linear2"}, {"marker_inset", "stresslet"}};
   CHECK_THROWS_WITH(Scene::from_json(j3, "t.json"),
@@ -202,7 +202,7 @@ TEST_CASE("resolution.marker_inset: the stresslet's rule by default in 3D (0 in 
   j3["physics_version"] = "5";
   j3["resolution"] = json::object();
   const Scene e = Scene::from_json(j3, "t.json");
-  CHECK(e.marker_inset == 0.0);
+  CHECK(e.resolution.marker_inset == 0.0);
   CHECK_FALSE(e.to_json()["resolution"].contains("marker_inset"));
   j3["resolution"] = {{"marker_inset", 0.0}};
   CHECK(Scene::from_json(j3, "t.json").to_json() == e.to_json());
@@ -210,27 +210,27 @@ TEST_CASE("resolution.marker_inset: the stresslet's rule by default in 3D (0 in 
   j3["resolution"] = {{"a", 10.0}, {"marker_inset", 0.45}};
   const Scene s = Scene::from_json(j3, "t.json");
   CHECK(s.to_json()["resolution"]["marker_inset"] == 0.45);
-  CHECK(Scene::from_json(s.to_json(), "t.json").marker_inset == 0.45);
+  CHECK(Scene::from_json(s.to_json(), "t.json").resolution.marker_inset == 0.45);
   j3["resolution"] = {{"a", 4.0}, {"marker_inset", 1.5}};
   CHECK_THROWS_WITH(Scene::from_json(j3, "t.json"), Catch::Contains("resolution.marker_inset") && Catch::Contains("[0, a/4]"));
   j3["resolution"] = {{"marker_inset", -0.1}};
   CHECK_THROWS_WITH(Scene::from_json(j3, "t.json"), Catch::Contains("resolution.marker_inset"));
   json j2 = minimal_2d();
-  CHECK(Scene::from_json(j2, "t.json").marker_inset == 0.0);
+  CHECK(Scene::from_json(j2, "t.json").resolution.marker_inset == 0.0);
   CHECK(Scene::from_json(j2, "t.json").to_json()["resolution"]["marker_inset"] == 0.0);
   j2["resolution"] = {{"marker_inset", 0.5}};
-  CHECK(Scene::from_json(j2, "t.json").marker_inset == 0.5);  // a scene choice in 2D
+  CHECK(Scene::from_json(j2, "t.json").resolution.marker_inset == 0.5);  // a scene choice in 2D
 }
 
 TEST_CASE("resolution.kelvin_voigt_step: exact_mobility by default (version 5: approximate_mobility, left out of its canonical text); 2D only",
           "[scene]") {
   json j = minimal_2d();
   j["eta"] = 200;
-  CHECK(capsule::choice_name(Scene::from_json(j, "t.json").kelvin_voigt_step) == "exact_mobility");
+  CHECK(capsule::choice_name(Scene::from_json(j, "t.json").resolution.kelvin_voigt_step) == "exact_mobility");
   CHECK(Scene::from_json(j, "t.json").to_json()["resolution"]["kelvin_voigt_step"] == "exact_mobility");
   j["physics_version"] = "5";
   const Scene d = Scene::from_json(j, "t.json");
-  CHECK(capsule::choice_name(d.kelvin_voigt_step) == "approximate_mobility");
+  CHECK(capsule::choice_name(d.resolution.kelvin_voigt_step) == "approximate_mobility");
   // The default is not written, so the ids of members run before the key existed stay.
   CHECK_FALSE(d.to_json()["resolution"].contains("kelvin_voigt_step"));
   CHECK(Scene::omitted_defaults(2).at("resolution.kelvin_voigt_step") == "approximate_mobility");
@@ -239,9 +239,9 @@ TEST_CASE("resolution.kelvin_voigt_step: exact_mobility by default (version 5: a
   CHECK(Scene::from_json(j, "t.json").to_json() == d.to_json());
   j["resolution"] = {{"kelvin_voigt_step", "exact_mobility"}};
   const Scene e = Scene::from_json(j, "t.json");
-  CHECK(capsule::choice_name(e.kelvin_voigt_step) == "exact_mobility");
+  CHECK(capsule::choice_name(e.resolution.kelvin_voigt_step) == "exact_mobility");
   CHECK(e.to_json()["resolution"]["kelvin_voigt_step"] == "exact_mobility");
-  CHECK(capsule::choice_name(Scene::from_json(e.to_json(), "t.json").kelvin_voigt_step) == "exact_mobility");  // runs as it says
+  CHECK(capsule::choice_name(Scene::from_json(e.to_json(), "t.json").resolution.kelvin_voigt_step) == "exact_mobility");  // runs as it says
   CHECK(e.to_json() != d.to_json());  // another member id
   j["resolution"] = {{"kelvin_voigt_step", "exact"}};
   CHECK_THROWS_WITH(Scene::from_json(j, "t.json"),
@@ -252,7 +252,7 @@ TEST_CASE("resolution.kelvin_voigt_step: exact_mobility by default (version 5: a
   json j3 = minimal_2d();
   j3["dim"] = 3;
   j3["shape"] = "sphere";
-  CHECK(capsule::choice_name(Scene::from_json(j3, "t.json").kelvin_voigt_step) == "approximate_mobility");
+  CHECK(capsule::choice_name(Scene::from_json(j3, "t.json").resolution.kelvin_voigt_step) == "approximate_mobility");
   j3["physics_version"] = "5";
   j3["resolution"] = {{"kelvin_voigt_step", "approximate_mobility"}};
   CHECK_FALSE(Scene::from_json(j3, "t.json").to_json()["resolution"].contains("kelvin_voigt_step"));
@@ -266,11 +266,11 @@ TEST_CASE("power_law.model: membrane by default (version 5: fluid_shell, left ou
   j["dim"] = 3;
   j["shape"] = "sphere";
   j["power_law"] = {{"K", 10}, {"n", 0.64}};
-  CHECK(capsule::choice_name(Scene::from_json(j, "t.json").power_law_model) == "membrane");
+  CHECK(capsule::choice_name(Scene::from_json(j, "t.json").power_law.model) == "membrane");
   CHECK(Scene::from_json(j, "t.json").to_json()["power_law"]["model"] == "membrane");
   j["physics_version"] = "5";
   const Scene d = Scene::from_json(j, "t.json");
-  CHECK(capsule::choice_name(d.power_law_model) == "fluid_shell");
+  CHECK(capsule::choice_name(d.power_law.model) == "fluid_shell");
   // The default is not written, so the ids of members run before the key existed stay.
   CHECK_FALSE(d.to_json()["power_law"].contains("model"));
   CHECK(Scene::omitted_defaults(3).at("power_law.model") == "fluid_shell");
@@ -278,9 +278,9 @@ TEST_CASE("power_law.model: membrane by default (version 5: fluid_shell, left ou
   CHECK(Scene::from_json(j, "t.json").to_json() == d.to_json());
   j["power_law"]["model"] = "membrane";
   const Scene m = Scene::from_json(j, "t.json");
-  CHECK(capsule::choice_name(m.power_law_model) == "membrane");
+  CHECK(capsule::choice_name(m.power_law.model) == "membrane");
   CHECK(m.to_json()["power_law"]["model"] == "membrane");
-  CHECK(capsule::choice_name(Scene::from_json(m.to_json(), "t.json").power_law_model) == "membrane");  // runs as it says
+  CHECK(capsule::choice_name(Scene::from_json(m.to_json(), "t.json").power_law.model) == "membrane");  // runs as it says
   CHECK(m.to_json() != d.to_json());  // another member id
   // Without a power law the key means nothing, and does not move the id.
   j["power_law"] = {{"K", 0}, {"model", "membrane"}};
@@ -299,11 +299,11 @@ TEST_CASE("resolution.collision: trt by default in 3D (version 5: mrt, left out 
   j3["dim"] = 3;
   j3["shape"] = "sphere";
   j3["V"] = 5;
-  CHECK(capsule::choice_name(Scene::from_json(j3, "t.json").collision) == "trt");
-  CHECK(capsule::choice_name(Scene::from_json(minimal_2d(), "t.json").collision) == "mrt");
+  CHECK(capsule::choice_name(Scene::from_json(j3, "t.json").resolution.collision) == "trt");
+  CHECK(capsule::choice_name(Scene::from_json(minimal_2d(), "t.json").resolution.collision) == "mrt");
   j3["physics_version"] = "5";
   const Scene d = Scene::from_json(j3, "t.json");
-  CHECK(capsule::choice_name(d.collision) == "mrt");
+  CHECK(capsule::choice_name(d.resolution.collision) == "mrt");
   // The default is not written, so the ids of members run before the key existed stay.
   CHECK_FALSE(d.to_json()["resolution"].contains("collision"));
   CHECK(Scene::omitted_defaults(2).at("resolution.collision") == "mrt");
@@ -312,9 +312,9 @@ TEST_CASE("resolution.collision: trt by default in 3D (version 5: mrt, left out 
   CHECK(Scene::from_json(j3, "t.json").to_json() == d.to_json());
   j3["resolution"] = {{"collision", "trt"}};
   const Scene t = Scene::from_json(j3, "t.json");
-  CHECK(capsule::choice_name(t.collision) == "trt");
+  CHECK(capsule::choice_name(t.resolution.collision) == "trt");
   CHECK(t.to_json()["resolution"]["collision"] == "trt");
-  CHECK(capsule::choice_name(Scene::from_json(t.to_json(), "t.json").collision) == "trt");  // runs as it says
+  CHECK(capsule::choice_name(Scene::from_json(t.to_json(), "t.json").resolution.collision) == "trt");  // runs as it says
   CHECK(t.to_json() != d.to_json());                                  // another member id
   j3["resolution"] = {{"collision", "bgk"}};
   CHECK_THROWS_WITH(Scene::from_json(j3, "t.json"),
@@ -384,9 +384,9 @@ TEST_CASE("lattice units follow (8), (34)-(36) and Re = k a^2 / nu", "[scene]") 
   Scene s = Scene::from_json(minimal_2d(), "t.json");
   auto u = capsule::units_for(s, 1.0);
   CHECK(u.nu == Approx(1.0 / 6.0));
-  CHECK(u.shear_rate * s.a * s.a / u.nu == Approx(s.Re));
-  CHECK(u.nu * u.shear_rate * s.a / u.E_s == Approx(s.Ca));
-  CHECK(u.E_B / (s.a * s.a * u.E_s) == Approx(s.E_b));  // dimensionless form, docs/conventions.md "E_b"
+  CHECK(u.shear_rate * s.resolution.a * s.resolution.a / u.nu == Approx(s.Re));
+  CHECK(u.nu * u.shear_rate * s.resolution.a / u.E_s == Approx(s.Ca));
+  CHECK(u.E_B / (s.resolution.a * s.resolution.a * u.E_s) == Approx(s.E_b));  // dimensionless form, docs/conventions.md "E_b"
   CHECK_THROWS(capsule::units_for(s, 0.5));
 }
 
@@ -409,8 +409,8 @@ TEST_CASE("the membrane's bending modulus is that of the circle or sphere its no
   j3["resolution"] = {{"a", 7.0}};  // the stresslet's inset, about 0.47
   const Scene sphere = Scene::from_json(j3, "t.json");
   const auto u3 = capsule::units_for(sphere, 1.0);
-  const double r_m = 7.0 - sphere.marker_inset;
-  CHECK(sphere.marker_inset > 0.4);
+  const double r_m = 7.0 - sphere.resolution.marker_inset;
+  CHECK(sphere.resolution.marker_inset > 0.4);
   CHECK(capsule::membrane_bending_modulus(sphere, u3) == Approx(sphere.E_b * r_m * r_m * u3.E_s).epsilon(1e-14));
   CHECK(capsule::membrane_bending_modulus(sphere, u3) < u3.E_B);
 }
@@ -431,11 +431,11 @@ TEST_CASE("3D relaxation-time rule: tau = 1.5 where stable, lowered by the coupl
   // Bending number B = E_b a Re nu / Ca capped at 0.17 (E_b = 0.1: the stable tau = 1 of Fig. 8).
   const Scene stiff = sphere(0.05, 0.1, 10);
   const double nu_stiff = (capsule::choose_tau(stiff) - 0.5) / 3.0;
-  CHECK(stiff.E_b * stiff.a * stiff.Re * nu_stiff / stiff.Ca == Approx(0.17));
+  CHECK(stiff.E_b * stiff.resolution.a * stiff.Re * nu_stiff / stiff.Ca == Approx(0.17));
   // Elastic number S = Re nu / (a Ca) capped at 0.17 (small Ca).
   const Scene soft = sphere(0.005, 0.0, 10);
   const double nu_soft = (capsule::choose_tau(soft) - 0.5) / 3.0;
-  CHECK(soft.Re * nu_soft / (soft.a * soft.Ca) == Approx(0.17));
+  CHECK(soft.Re * nu_soft / (soft.resolution.a * soft.Ca) == Approx(0.17));
   // A more viscous interior: with the trt rates (version 6) its D does not depend on tau, so it
   // takes tau = 1.5 as well; with the mrt rates (version 5) the error depends on the inside
   // relaxation time and tau stays 1.

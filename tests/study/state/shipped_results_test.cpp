@@ -59,7 +59,7 @@ TEST_CASE("shipped results match their campaigns: no orphaned member or stale fo
       // And the relaxation time that today's rule chooses for it (a member whose scene leaves tau
       // to the rule, run before the rule changed within a physics version, must be rerun).
       const capsule::Scene scene = capsule::Scene::from_json(s.members[i].scene, s.members[i].dir_name());
-      if (scene.tau == 0 && status.status == "complete") CHECK(status.tau == Approx(capsule::choose_tau(scene)).epsilon(1e-12));
+      if (scene.resolution.tau == 0 && status.status == "complete") CHECK(status.tau == Approx(capsule::choose_tau(scene)).epsilon(1e-12));
     }
     std::set<std::string> known;
     for (const auto& m : s.members) known.insert(m.dir_name());
