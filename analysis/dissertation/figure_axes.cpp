@@ -112,6 +112,8 @@ nlohmann::json text_figures_of_campaign(const std::string& campaign) {
         if (a.number == f.number && !a.together.empty() && name == "fig" + f.number + ".png") {
           entry["together"] = nlohmann::json::array();
           for (const auto& g : a.together) entry["together"].push_back({{"label", g.label}, {"members", g.members}});
+          entry["left"] = a.toolkit_left();  // the members' series drawn: D_xy, theta
+          if (!a.toolkit_otherwise.empty()) entry["otherwise"] = a.toolkit_otherwise;
         }
       out.push_back(entry);
     }

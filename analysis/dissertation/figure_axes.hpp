@@ -39,7 +39,8 @@ const std::vector<TextFigureAxes>& figure_axes();
 
 // For `study report` of campaign `campaign`: ReportRequest::text_figures, every file of
 // figures.md under `<campaign>/report/figures/` with its figure's number and what it shows,
-// and for a figure drawn together, its groups.
+// and for a figure drawn together, its groups, the series on its left axis ("left": D_xy or
+// theta) and what the toolkit draws otherwise ("otherwise", the row's cell, when not empty).
 nlohmann::json text_figures_of_campaign(const std::string& campaign);
 
 }  // namespace capsule::analysis

@@ -1,7 +1,9 @@
 #include "analysis/report/figure_declarations.hpp"
 
+#include <algorithm>
 #include <map>
 #include <set>
+#include <stdexcept>
 #include <vector>
 
 namespace capsule::analysis {
@@ -85,7 +87,52 @@ json times_declaration(const json& table) {
   return d;
 }
 
+// Members drawn together, as one figure of the text draws them (e.g. Fig. 62: the power law
+// and its Kelvin-Voigt partners; Fig. 63 their inclinations): the groups' members this report
+// has whose block carries the series drawn.
+json together_declaration(const json& text_figure, const json& figure_data) {
+  const std::string file = text_figure["file"].get<std::string>();
+  const json left = text_figure.value("left", json::array({"D_xy"}));
+  const auto& allowed = together_quantities();
+  if (left.size() != 1 || std::find(allowed.begin(), allowed.end(), left[0].get<std::string>()) == allowed.end())
+    throw std::invalid_argument("figure " + file + ": members drawn together plot one series against kt, one of " +
+                                "D_xy, theta; got " + left.dump());
+  const std::string quantity = left[0].get<std::string>();
+  std::set<std::string> slugs;  // members whose block has the series
+  for (const auto& m : figure_data.value("members", json::array()))
+    if (m.contains(quantity) && m[quantity].size() == m["kt"].size()) slugs.insert(m["slug"].get<std::string>());
+  json groups = json::array(), series = json::array();
+  for (const auto& g : text_figure["together"]) {
+    json present = json::array();
+    for (const auto& slug : g["members"])
+      if (slugs.count(slug.get<std::string>())) {
+        present.push_back(slug);
+        series.push_back(slug);
+      }
+    groups.push_back({{"label", g["label"]}, {"members", present}});
+  }
+  return {{"file", file}, {"kind", "together"}, {"source", groups}, {"x", "kt"}, {"left", left},
+          {"right", json::array()}, {"panels", json::array()}, {"series", series}};
+}
+
 }  // namespace
+
+const std::vector<std::string>& together_quantities() {
+  static const std::vector<std::string> q = {"D_xy", "theta"};
+  return q;
+}
+
+std::map<std::string, std::set<std::string>> together_series(const json& text_figures) {
+  std::map<std::string, std::set<std::string>> out;
+  for (const auto& t : text_figures) {
+    if (!t.contains("together")) continue;
+    for (const auto& q : t.value("left", json::array()))
+      if (q != "D_xy")
+        for (const auto& g : t["together"])
+          for (const auto& slug : g["members"]) out[slug.get<std::string>()].insert(q.get<std::string>());
+  }
+  return out;
+}
 
 std::string column_quantity(const std::string& column, const std::string& normalise) {
   std::string q = column.substr(column.find('.') == std::string::npos ? 0 : column.find('.') + 1);
@@ -105,9 +152,7 @@ void declare_figures(json& figure_data, const json& text_figures) {
     if (!files.insert(d["file"].get<std::string>()).second) return;  // a member shared by two cases: one PNG
     figures.push_back(std::move(d));
   };
-  std::set<std::string> slugs;
   for (const auto& m : figure_data.value("members", json::array())) {
-    slugs.insert(m["slug"].get<std::string>());
     json series = json::array({"simulation"});
     for (const auto& c : m["curves"]) series.push_back(c["label"]);
     add({{"file", "member_" + m["slug"].get<std::string>() + ".png"}, {"kind", "member"}, {"source", m["slug"]},
@@ -137,24 +182,9 @@ void declare_figures(json& figure_data, const json& text_figures) {
     add({{"file", "published.png"}, {"kind", "published"}, {"x", "kt"}, {"left", {"D"}}, {"right", json::array()},
          {"panels", json::array()}, {"series", series}});
   }
-  // Members drawn together, as one figure of the text draws them (e.g. Fig. 62: the power law
-  // and its Kelvin-Voigt partners): the groups' members this report has.
-  for (const auto& t : text_figures) {
-    if (!t.contains("together")) continue;
-    json groups = json::array(), series = json::array();
-    for (const auto& g : t["together"]) {
-      json present = json::array();
-      for (const auto& slug : g["members"])
-        if (slugs.count(slug.get<std::string>())) {
-          present.push_back(slug);
-          series.push_back(slug);
-        }
-      groups.push_back({{"label", g["label"]}, {"members", present}});
-    }
-    if (series.empty()) continue;
-    add({{"file", t["file"]}, {"kind", "together"}, {"source", groups}, {"x", "kt"}, {"left", {"D_xy"}},
-         {"right", json::array()}, {"panels", json::array()}, {"series", series}});
-  }
+  for (const auto& t : text_figures)
+    if (t.contains("together"))
+      if (json d = together_declaration(t, figure_data); !d["series"].empty()) add(std::move(d));
   // The text's figure each one stands for.
   std::map<std::string, const json*> text_of;
   for (const auto& t : text_figures) text_of[t["file"].get<std::string>()] = &t;
@@ -162,6 +192,7 @@ void declare_figures(json& figure_data, const json& text_figures) {
     if (const auto it = text_of.find(d["file"].get<std::string>()); it != text_of.end()) {
       d["number"] = (*it->second)["number"];
       d["shows"] = (*it->second)["shows"];
+      if (d["kind"] == "together" && it->second->contains("otherwise")) d["otherwise"] = (*it->second)["otherwise"];
     }
   figure_data["figures"] = figures;
 }

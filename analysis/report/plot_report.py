@@ -38,6 +38,7 @@ WORDS = {
     "w_R1": r"fast phase's share $w_{R1}$ (fraction)",
     "gamma_max": r"maximum surface shear rate $\gamma_{max}/k$",
     "gamma_min": r"minimum surface shear rate $\gamma_{min}/k$",
+    "theta": r"inclination $\theta$ (rad)",
     "Ca": "capillary number $Ca$",
     "E_b": "bending stiffness $E_b$",
     "V": "viscosity ratio $V$",
@@ -73,7 +74,8 @@ TITLE_SYMBOLS = [(r"\bk tau_(R1|R2|s|r)\b", r"$k\\tau_{\1}$"), (r"\btau_(s|r)/ta
                  (r"(?<!\\)\btau_(e|v|s|r)\b", r"$\\tau_\1$"), (r"\bD_xy\b", r"$D_{xy}$"), (r"\bE_b\b", r"$E_b$"),
                  (r"\beta\b", r"$\\eta$"), (r"\bmu_(a|s)\b", r"$\\mu_\1$"), (r"\btheta\b", r"$\\theta$"),
                  (r"\bgamma\b", r"$\\gamma$"), (r"-pi/3\b", r"$-\\pi/3$"), (r"\bpi/6\b", r"$\\pi/6$"),
-                 (r"\bkt\b", r"$kt$"), (r"\bCa\b", r"$Ca$")]
+                 (r"\bkt\b", r"$kt$"), (r"\bCa\b", r"$Ca$"), (r"\b(K|n|V|G)\b(?= [0-9]| against| varied)", r"$\1$"),
+                 (r"\bc0\b", r"$c_0$"), (r"\bkappa\b", r"$\\kappa$")]
 
 
 def typeset(text):
@@ -372,30 +374,99 @@ def draw_published(decl):
 
 
 # Members drawn together as one figure of the text draws them (e.g. Fig. 62, the power law solid
-# and its Kelvin-Voigt partners dotted): a line style per group, a colour per member in it.
+# and its Kelvin-Voigt partners dotted; Fig. 63 their inclinations): a line style per group (the
+# levels of a resolution ladder are groups), a colour per member in it, where the shear stopped.
+# One group: a line style and a colour per member (as the text's Fig. 60), so equal curves stay
+# visible; groups of one member each: a colour per group.
 def draw_together(decl):
+    quantity = decl["left"][0]
+    groups = decl["source"]
     fig, ax = plt.subplots(figsize=(6.0, 3.8))
-    styles = ["-", ":", "--", "-."]
-    for g, group in enumerate(decl["source"]):
+    styles = ["-", "--", ":", "-."] if len(groups) == 1 else ["-", ":", "--", "-."]
+    single = all(len(g["members"]) == 1 for g in groups)
+    stops = []  # (kt, value, colour) where a member's shear stopped before its end
+    for g, group in enumerate(groups):
         ms = [members[slug] for slug in group["members"]]
-        keys = sorted({k for m in ms for k in m.get("parameters", {})
-                       if len({m2.get("parameters", {}).get(k) for m2 in ms}) > 1})
-        for i, m in enumerate(ms):
-            name = ", ".join("%s = %g" % (SHORT.get(k, k.split(".")[-1]), m["parameters"][k])
-                             for k in keys if k in m["parameters"]) or m["slug"]
-            ax.plot(m["kt"], m["D_xy"], styles[g % len(styles)], color="C%d" % (i % 10), lw=1.2,
-                    label=group["label"] + ", " + name)
+        for i, (m, name) in enumerate(zip(ms, member_names(ms))):
+            color = "C%d" % ((g if single else i) % 10)
+            style = styles[(i if len(groups) == 1 else g) % len(styles)]
+            t_stop, t_end = m["markers"].get("t_stop"), m["markers"].get("t_end", m["kt"][-1])
+            kt, y = shear_inclination(m, t_stop) if quantity == "theta" else (m["kt"], m[quantity])
+            ax.plot(kt, y, style, color=color, lw=1.2, label=typeset(group["label"]) + (", " + name if name else ""))
+            if quantity != "theta" and t_stop is not None and t_stop < t_end - 1e-6 * max(1.0, abs(t_end)):
+                k = min(range(len(m["kt"])), key=lambda j: abs(m["kt"][j] - t_stop))
+                stops.append((m["kt"][k], m[quantity][k], color))
+    if len(groups) == 1:
+        caption = typeset(groups[0]["label"]) + ": a line style and a colour per member."
+    else:
+        caption = "; ".join("%s: %s lines" % (typeset(group["label"]), STYLE_WORDS[styles[g % len(styles)]])
+                            for g, group in enumerate(groups)) + "."
+    if any(re.match(r"a = [0-9.]+$", group["label"]) for group in groups):
+        caption += " $a$: the capsule's radius in lattice units, a level of the resolution ladder."
+    if quantity == "theta":
+        caption += (" The inclination during the shear, where $D_{xy}$ > %g: an undeformed or relaxed sphere has no "
+                    "major axis, so the recovery is not drawn." % MIN_D_FOR_THETA)
+    caption += mark_stops(ax, stops)
+    if decl.get("otherwise"):
+        caption += " " + otherwise_sentence(decl["otherwise"])
     ax.set_xlabel(words("kt"))
-    ax.set_ylabel(words("D_xy"))
-    ax.set_title(title_of(decl, "Taylor deformation against time"), fontsize=9)
+    ax.set_ylabel(words(quantity))
+    ax.set_title(title_of(decl, words(quantity)[0].upper() + words(quantity)[1:] + " against time"), fontsize=9)
     legend_outside(ax)
-    save(fig, decl["file"], "; ".join("%s: %s lines" % (group["label"], STYLE_WORDS[styles[g % len(styles)]])
-                                      for g, group in enumerate(decl["source"])) + ".")
+    save(fig, decl["file"], caption)
+
+
+def member_names(ms):
+    """Each member's legend name within its group: the parameters that differ in it ("$E_b$ = 0.05")."""
+    keys = sorted({k for m in ms for k in m.get("parameters", {})
+                   if len({m2.get("parameters", {}).get(k) for m2 in ms}) > 1})
+    names = [", ".join(parameter_text(k, m["parameters"][k]) for k in keys if k in m["parameters"]) for m in ms]
+    return [n or (m["slug"] if len(ms) > 1 else "") for n, m in zip(names, ms)]
+
+
+def mark_stops(ax, stops):
+    """One vertical line where the members' shear stopped together (within 2 %), else an open circle
+    on each curve; returns the caption's sentence."""
+    if not stops:
+        return ""
+    times = [t for t, _, _ in stops]
+    if max(times) - min(times) <= 0.02 * max(abs(t) for t in times):
+        ax.axvline(sum(times) / len(times), color="0.5", lw=0.8, ls="-", zorder=0)
+        return " Vertical line: the shear stopped ($kt$ = %.3g)." % (sum(times) / len(times))
+    for t, y, color in stops:
+        ax.plot([t], [y], "o", mfc="none", color=color, ms=5)
+    return " Open circles: where each member's shear stopped."
 
 
 STYLE_WORDS = {"-": "solid", ":": "dotted", "--": "dashed", "-.": "dash-dot"}
 SHORT = {"power_law.K": "$K$", "power_law.n": "$n$", "eta": r"$\eta$", "resolution.a": "$a$",
-         "resolution.mesh_level": "mesh level", "Ca": "$Ca$", "E_b": "$E_b$", "V": "$V$"}
+         "Ca": "$Ca$", "E_b": "$E_b$", "V": "$V$", "G": "$G$", "c0": "$c_0$"}
+
+
+MIN_D_FOR_THETA = 1e-3  # below it the major axis, and so theta, is not defined to plotting accuracy
+
+
+def shear_inclination(m, t_stop):
+    """theta while the shear runs (kt <= t_stop) and the capsule is deformed (D_xy > MIN_D_FOR_THETA)."""
+    keep = [j for j, t in enumerate(m["kt"])
+            if (t_stop is None or t <= t_stop) and m["D_xy"][j] > MIN_D_FOR_THETA]
+    return [m["kt"][j] for j in keep], [m["theta"][j] for j in keep]
+
+
+def otherwise_sentence(text):
+    """figure_axes.md's "without X: why" / "with X: why" as a caption's sentence."""
+    head, _, why = text.partition(": ")
+    for prefix, words_ in (("without ", "Not drawn, unlike the text: "), ("with ", "Added to the text's figure: ")):
+        if head.startswith(prefix):
+            return typeset("%s%s (%s)." % (words_, head[len(prefix):], why))
+    return typeset("Unlike the text: %s (%s)." % (head, why))
+
+
+def parameter_text(key, value):
+    """A member's parameter in a legend: "$E_b$ = 0.05"; a mesh level as its triangles (20 x 4^level)."""
+    if key == "resolution.mesh_level":
+        return "%d triangles" % (20 * 4 ** int(round(value)))
+    return "%s = %g" % (SHORT.get(key, key.split(".")[-1]), value)
 
 
 DRAW = {"member": draw_member, "gamma": draw_gamma, "times": draw_times, "slices": draw_slices,

@@ -24,7 +24,9 @@ struct ReportRequest {
   std::string no_figures;      // non-empty: draw no figures, and this says why
   // The dissertation's figures this report's figures stand for: [{"file": "tt_times_vs_Ca.png",
   // "number": "25", "shows": "..."}, ...]; an entry with "together": [{"label": "power law", "members": [slugs]}, ...] is a
-  // figure of its own drawing those members on one plot, a line style per group (figure_declarations.hpp).
+  // figure of its own drawing those members on one plot, a line style per group, their series "left"
+  // (["D_xy"] when absent; ["theta"]) against kt, and "otherwise": what the text draws that it does not
+  // (figure_declarations.hpp).
   nlohmann::json text_figures = nlohmann::json::array();
 };
 

@@ -39,6 +39,7 @@ MemberAnalysis analyse_member(const MemberRef& ref, const AnalysisBlock& block, 
       if (const auto it = data->series.find("kt"); it != data->series.end()) m.kt = it->second;
       if (const auto it = data->series.find("D_xy"); it != data->series.end()) m.D = it->second;
       if (const auto it = data->series.find("D_extent"); it != data->series.end()) m.D_extent = it->second;
+      if (const auto it = data->series.find("theta"); it != data->series.end()) m.theta = it->second;
       if (const auto lo = data->series.find("gamma_min"), hi = data->series.find("gamma_max");
           lo != data->series.end() && hi != data->series.end())
         m.gamma_min = lo->second, m.gamma_max = hi->second;

@@ -1,8 +1,10 @@
 // Per-member fits (85)-(90): the member table, each member's entry in fits.json, and the
 // D_xy(kt) figure with its fitted curves (Figs. 13-14, 64).
 #include <filesystem>
+#include <set>
 
 #include "analysis/fit/exponential_fits.hpp"
+#include "analysis/report/figure_declarations.hpp"
 #include "analysis/report/report_section.hpp"
 
 namespace capsule::analysis {
@@ -46,11 +48,13 @@ std::string recorded_member_path(const std::string& member_path, const fs::path&
   return rel.generic_string();
 }
 
-nlohmann::json member_figure(const MemberAnalysis& m) {
+// `extra`: the series besides D_xy that a figure drawing this member with others plots ("theta").
+nlohmann::json member_figure(const MemberAnalysis& m, const std::set<std::string>& extra) {
   nlohmann::json mj{{"slug", file_slug(m.ref.slug)}, {"kt", m.kt}, {"D_xy", m.D}, {"curves", nlohmann::json::array()}};
   mj["title"] = case_label(m.ref.case_name) + " / " + m.ref.slug + " (" + m.status + ")";
   if (m.gamma_min.size() == m.kt.size() && m.gamma_max.size() == m.kt.size() && !m.gamma_min.empty())
     mj["gamma"] = {{"min", m.gamma_min}, {"max", m.gamma_max}};
+  if (extra.count("theta") && m.theta.size() == m.kt.size()) mj["theta"] = m.theta;
   mj["parameters"] = nlohmann::json::object();  // a figure drawing several members names them by these
   for (const auto& [k, v] : m.parameters)
     if (std::isfinite(v)) mj["parameters"][k] = v;
@@ -93,8 +97,12 @@ class MemberFitsSection : public ReportSection {
     }
     outputs.write_table(member_fits_table(context.members), out_dir, "member_fits");
     outputs.figure_data["members"] = nlohmann::json::array();
+    const auto extra = together_series(context.request.text_figures);
     for (const auto& m : context.members)
-      if (!m.kt.empty() && m.kt.size() == m.D.size()) outputs.figure_data["members"].push_back(member_figure(m));
+      if (!m.kt.empty() && m.kt.size() == m.D.size()) {
+        const auto it = extra.find(file_slug(m.ref.slug));
+        outputs.figure_data["members"].push_back(member_figure(m, it == extra.end() ? std::set<std::string>{} : it->second));
+      }
   }
 };
 

@@ -101,7 +101,20 @@ TEST_CASE("Figures: every figure THESIS.md links has the axes of the text's figu
     if ((*decl)["kind"] == "together") {
       for (const auto& a : figure_axes())
         if (a.number == number) REQUIRE((*decl)["source"].size() == a.together.size());
-      for (const auto& g : (*decl)["source"]) CHECK_FALSE(g["members"].empty());
+      // Every member drawn carries the declared series (D_xy, theta) beside its kt.
+      const std::string q = (*decl)["left"][0].get<std::string>();
+      std::map<std::string, const nlohmann::json*> member;
+      for (const auto& m : data[data_file]["members"]) member[m["slug"].get<std::string>()] = &m;
+      for (const auto& g : (*decl)["source"]) {
+        CHECK_FALSE(g["members"].empty());
+        for (const auto& slug : g["members"]) {
+          INFO("member " << slug << ", series " << q);
+          REQUIRE(member.count(slug.get<std::string>()) == 1);
+          const auto& m = *member.at(slug.get<std::string>());
+          REQUIRE(m.contains(q));
+          CHECK(m[q].size() == m["kt"].size());
+        }
+      }
     }
   }
 }
@@ -150,5 +163,24 @@ TEST_CASE("Figures: a campaign's report is told which of its figures stand for w
     }
   }
   CHECK(fig62);
+  // Fig. 63 draws the same members' inclination: the entry names the series.
+  bool fig63 = false;
+  for (const auto& t : tf)
+    if (t["number"] == "63") {
+      fig63 = true;
+      CHECK(t["file"] == "fig63.png");
+      CHECK(t["left"] == nlohmann::json::array({"theta"}));
+      CHECK(t["together"].size() == 2);
+    }
+  CHECK(fig63);
+  // The levels of a resolution ladder are groups of their own, and what the text draws otherwise is passed on.
+  for (const auto& t : text_figures_of_campaign("ch4_3d_cases"))
+    if (t["number"] == "40") {
+      REQUIRE(t["together"].size() == 2);
+      CHECK(t["together"][0]["label"] == "a = 7");
+      CHECK(t["together"][1]["label"] == "a = 5");
+      CHECK(t["left"] == nlohmann::json::array({"D_xy"}));
+      CHECK(t["otherwise"].get<std::string>().rfind("with ", 0) == 0);
+    }
   CHECK(text_figures_of_campaign("no_such_campaign").empty());
 }

@@ -107,3 +107,36 @@ TEST_CASE("Figure declarations: members drawn together keep the groups, a shared
   CHECK((*find_file(data["figures"], "member_K-K20-a7.png"))["number"] == "14");
   CHECK((*find_file(data["figures"], "member_K-K20-a7.png"))["left"] == json::array({"D_xy"}));
 }
+
+TEST_CASE("Figure declarations: members drawn together plot the series the text draws: theta for the inclination", "[analysis][figures]") {
+  json data{{"members", json::array()}};
+  for (const std::string slug : {"n-n1-a7", "n-n0.64-a7"}) {
+    json m{{"slug", slug}, {"kt", {0.0, 1.0}}, {"D_xy", {0.0, 0.1}}, {"curves", json::array()}, {"markers", json::object()}};
+    if (slug == "n-n1-a7") m["theta"] = {0.8, 0.5};  // n-n0.64-a7's block carries no theta
+    data["members"].push_back(m);
+  }
+  json text = json::array({{{"file", "fig61.png"}, {"number", "61"}, {"shows", "theta"}, {"left", {"theta"}},
+                            {"together", {{{"label", "power law"}, {"members", {"n-n1-a7", "n-n0.64-a7"}}}}},
+                            {"otherwise", "without X: why"}},
+                           {{"file", "fig60.png"}, {"number", "60"}, {"shows", "D"},
+                            {"together", {{{"label", "power law"}, {"members", {"n-n1-a7", "n-n0.64-a7"}}}}}}});
+  // The members block carries theta only for the members a theta figure draws.
+  const auto wanted = together_series(text);
+  REQUIRE(wanted.size() == 2);
+  CHECK(wanted.at("n-n1-a7") == std::set<std::string>{"theta"});
+  declare_figures(data, text);
+  const json* theta = find_file(data["figures"], "fig61.png");
+  REQUIRE(theta != nullptr);
+  CHECK((*theta)["left"] == json::array({"theta"}));
+  CHECK((*theta)["x"] == "kt");
+  CHECK((*theta)["source"][0]["members"] == json::array({"n-n1-a7"}));  // the member without theta is left out
+  CHECK((*theta)["otherwise"] == "without X: why");
+  const json* d = find_file(data["figures"], "fig60.png");
+  REQUIRE(d != nullptr);
+  CHECK((*d)["left"] == json::array({"D_xy"}));  // no "left": D_xy, as Figs. 59-62
+  CHECK((*d)["series"].size() == 2);
+  CHECK_FALSE(d->contains("otherwise"));
+  // A series the members block does not carry is refused, naming the figure.
+  text[0]["left"] = {"beta"};
+  CHECK_THROWS_WITH(declare_figures(data, text), Catch::Contains("fig61.png") && Catch::Contains("D_xy, theta"));
+}
