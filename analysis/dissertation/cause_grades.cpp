@@ -52,7 +52,7 @@ std::vector<const CauseGrade*> grades_of_claim(const std::vector<CauseGrade>& gr
   return out;
 }
 
-bool explains(const CauseGrade& g) { return g.measured && std::isfinite(g.fraction) && g.fraction > 0.0; }
+bool explains(const CauseGrade& g) { return g.measured && std::isfinite(g.fraction) && g.fraction >= k_explains_share; }
 
 namespace {
 std::string percent(double fraction) { return short_number(std::round(100.0 * fraction)) + " %"; }
@@ -69,6 +69,7 @@ std::string closes_text(const CauseGrade& g) {
   if (!std::isfinite(g.fraction)) return "no gap to close";
   if (g.fraction < 0.0) return "widens the gap (" + percent(g.fraction) + ")";
   if (g.fraction > 1.0) return "closes " + percent(g.fraction) + " of the gap (past the text)";
+  if (g.fraction < k_explains_share) return "closes only " + percent(g.fraction) + " of the gap";
   return "closes " + percent(g.fraction) + " of the gap";
 }
 

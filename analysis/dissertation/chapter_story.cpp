@@ -1,6 +1,7 @@
 #include "analysis/dissertation/chapter_story.hpp"
 
 #include <map>
+#include <set>
 
 #include "analysis/dissertation/chapter_tables.hpp"
 #include "analysis/dissertation/cause_grades.hpp"
@@ -39,9 +40,11 @@ std::string causes_sentence(const std::vector<std::string>& differing, const std
   std::vector<std::string> unexplained;
   std::size_t explained = 0;
   const CauseGrade* best = nullptr;
+  std::set<std::size_t> not_closing;  // causes measured on these claims that close less than a tenth of the gap
   for (const auto& key : differing) {
     bool any = false;
     for (const CauseGrade* g : grades_of_claim(grades, key)) {
+      if (g->measured && !explains(*g)) not_closing.insert(g->cause);
       if (!explains(*g)) continue;
       any = true;
       if (!best || g->fraction > best->fraction) best = g;
@@ -55,7 +58,13 @@ std::string causes_sentence(const std::vector<std::string>& differing, const std
          known_deviations()[best->cause - 1].topic + " " + closes_text(*best) + " of " +
          anchor_link(best->gap.claim, claim_anchor(best->gap.claim)) + ")";
   if (unexplained.empty()) return s + ".";
-  s += ", " + std::to_string(unexplained.size()) + " unexplained (no measured cause): ";
+  s += ", " + std::to_string(unexplained.size()) + " unexplained";
+  if (!not_closing.empty()) {
+    std::string causes;
+    for (const std::size_t n : not_closing) append_listed(causes, anchor_link(cause_label(n), cause_anchor(n)));
+    s += " (" + causes + " measured: " + (not_closing.size() == 1 ? "it widens or barely moves" : "they widen or barely move") + " the gap)";
+  }
+  s += ": ";
   const std::size_t room = k_prose_line_characters > used + s.size() + 2 ? k_prose_line_characters - used - s.size() - 2 : 0;
   return s + linked_keys(unexplained, room) + ".";
 }

@@ -36,7 +36,7 @@ std::string claim_details_markdown(const std::vector<ClaimResult>& rows, const s
       explained = explained || explains(*g);
     }
     if ((verdict == ClaimVerdict::differs || verdict == ClaimVerdict::in_part) && !explained)
-      md += "- **Cause:** unexplained (no shipped probe measures a cause that closes part of its gap).\n";
+      md += "- **Cause:** unexplained (no shipped probe measures a cause that closes a tenth of its gap or more).\n";
     md += "\n";
   }
   return md;

@@ -127,7 +127,7 @@ std::string opening_markdown(const std::vector<ClaimResult>& claims, const std::
         "where the text prints none the rule can run on (its figures are not digitised). cause: the "
         "[known causes](#known-causes) linked from the claim, each with the share of the gap between the toolkit and the text "
         "it closes as a shipped probe measures it, (with the cause - toolkit)/(text - toolkit); *unexplained*: the claim differs "
-        "and no measured cause closes part of its gap.\n\n";
+        "and no measured cause closes a tenth of its gap or more.\n\n";
   md += chapter_tables_markdown(claims, grades);
   md += "### Words used here\n\n"
         "- **campaign**: a set of simulations run together for one figure or table of the text (`campaigns/dissertation/<name>.json`); "
@@ -143,7 +143,7 @@ std::string opening_markdown(const std::vector<ClaimResult>& claims, const std::
         "the fast and slow recovery times of (88)-(90); **w_R1**: the share of the recovery carried by the fast phase when "
         "the two amplitudes of (90) are fitted freely (**free amplitudes**; (90) fixes it at 1/2).\n"
         "- **C1 ... C" + std::to_string(known_deviations().size()) + "**: the known causes of disagreement (below); a cause is linked from a claim only "
-        "where a shipped probe measures how much of the claim's gap it closes; a claim that differs with no cause closing part of its gap is "
+        "where a shipped probe measures how much of the claim's gap it closes; a claim that differs with no cause closing a tenth of its gap or more is "
         "*unexplained*.\n\n";
   return md;
 }

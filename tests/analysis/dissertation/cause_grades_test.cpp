@@ -36,6 +36,9 @@ TEST_CASE("Cause grades: the share of the gap closed, its sign and its words", "
   CHECK(closes_text(graded(2.0, 2.5, 1.0)) == "widens the gap (-50 %)");
   CHECK(closes_text(graded(2.0, 0.5, 1.0)) == "closes 150 % of the gap (past the text)");
   CHECK(closes_text(graded(1.0, 0.5, 1.0)) == "no gap to close");
+  CHECK(closes_text(graded(0.9, 0.904, 1.0)) == "closes only 4 % of the gap");
+  CHECK_FALSE(explains(graded(0.9, 0.904, 1.0)));  // under k_explains_share: the claim stays unexplained
+  CHECK(explains(graded(0.9, 0.92, 1.0)));
   CHECK(closes_percent(graded(0.9, 0.95, 1.0)) == "50 %");
   CHECK(explains(graded(0.9, 0.95, 1.0)));
   CHECK_FALSE(explains(graded(2.0, 2.5, 1.0)));
