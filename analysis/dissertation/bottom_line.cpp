@@ -33,18 +33,19 @@ std::string claims_verb(int n, const std::string& plural_verb, const std::string
 
 }  // namespace
 
-std::string bottom_line_markdown(const std::vector<ClaimResult>& rows, const DissertationSummary& s) {
+std::string bottom_line_markdown(const std::vector<ClaimResult>& rows, const DissertationSummary& s, const std::vector<CauseGrade>& grades) {
   const auto verdicts = claim_verdicts(rows);
   std::map<std::string, std::string> chapter_of;
   for (const auto& r : rows) chapter_of.emplace(r.key, claim_chapter(r));
   std::map<std::string, std::map<ClaimVerdict, int>> by_chapter_counts;
   std::map<ClaimVerdict, std::vector<std::string>> keys_with;
-  std::map<std::size_t, int> differing_per_cause;  // claims that differ or hold in part, per known cause
+  std::map<std::size_t, int> differing_per_cause;  // claims that differ or hold in part whose gap a cause closes in part
   for (const auto& [key, v] : verdicts) {
     ++by_chapter_counts[chapter_of[key]][v];
     keys_with[v].push_back(key);
     if (v == ClaimVerdict::differs || v == ClaimVerdict::in_part)
-      for (const std::size_t n : causes_of_claim(key)) ++differing_per_cause[n];
+      for (const CauseGrade* g : grades_of_claim(grades, key))
+        if (explains(*g)) ++differing_per_cause[g->cause];
   }
 
   const auto number_of = [&keys_with](ClaimVerdict v) { return static_cast<int>(keys_with[v].size()); };
@@ -76,9 +77,9 @@ std::string bottom_line_markdown(const std::vector<ClaimResult>& rows, const Dis
     for (const auto& [n, count] : causes)
       append_listed(list, anchor_link(cause_label(n) + " " + known_deviations()[n - 1].topic, cause_anchor(n)) +
                               " (" + std::to_string(count) + ")");
-    md += "- **Known causes** linked from most of the claims that differ or hold in part: " + list + ".\n";
+    md += "- **Known causes** that close part of the gap of the most claims that differ or hold in part: " + list + ".\n";
   }
-  md += "\n**Where the text holds, by chapter:**\n\n" + chapter_story_markdown(rows);
+  md += "\n**Where the text holds, by chapter:**\n\n" + chapter_story_markdown(rows, grades);
   return md;
 }
 

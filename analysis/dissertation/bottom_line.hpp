@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/dissertation/cause_grades.hpp"
 #include "analysis/dissertation/claims.hpp"
 
 namespace capsule::analysis {
@@ -13,6 +14,8 @@ namespace capsule::analysis {
 struct DissertationSummary;
 
 // The claims' counts come from claim_verdicts(rows); Table 2's from `summary`.
-std::string bottom_line_markdown(const std::vector<ClaimResult>& rows, const DissertationSummary& summary);
+// The causes named are those that close part of the gap of the most claims (grades).
+std::string bottom_line_markdown(const std::vector<ClaimResult>& rows, const DissertationSummary& summary,
+                                 const std::vector<CauseGrade>& grades = {});
 
 }  // namespace capsule::analysis

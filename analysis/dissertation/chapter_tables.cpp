@@ -39,14 +39,18 @@ std::string clip_text(const std::string& text, std::size_t limit) {
   return out + ellipsis;
 }
 
-std::string cause_links(const std::string& claim_key) {
+std::string cause_links(const std::string& claim_key, Verdict verdict, const std::vector<CauseGrade>& grades) {
   std::string out;
-  for (const std::size_t n : causes_of_claim(claim_key))
-    append_listed(out, anchor_link(cause_label(n), cause_anchor(n)));
+  bool explained = false;
+  for (const CauseGrade* g : grades_of_claim(grades, claim_key)) {
+    append_listed(out, anchor_link(cause_label(g->cause), cause_anchor(g->cause)) + " " + closes_percent(*g));
+    explained = explained || explains(*g);
+  }
+  if (verdict == Verdict::differs && !explained) append_listed(out, "unexplained");
   return out;
 }
 
-std::string chapter_tables_markdown(const std::vector<ClaimResult>& rows) {
+std::string chapter_tables_markdown(const std::vector<ClaimResult>& rows, const std::vector<CauseGrade>& grades) {
   std::string md;
   for (const auto& chapter : text_chapters()) {
     Table t;
@@ -56,7 +60,7 @@ std::string chapter_tables_markdown(const std::vector<ClaimResult>& rows) {
       const std::string claim = anchor_link(r.key, claim_anchor(r.key));
       const std::string levels = levels_text(r.levels);
       const std::string verdict = std::string(verdict_text(r.verdict)) + (levels.empty() ? "" : " (" + levels + ")");
-      const std::string causes = cause_links(r.key);
+      const std::string causes = cause_links(r.key, r.verdict, grades);
       const std::string text_passes = text_passes_text(r.text_passes);
       // What the claim, verdict and causes leave of the row goes to the two texts: the text's
       // words first (up to half and a little more), the toolkit's numbers the rest.

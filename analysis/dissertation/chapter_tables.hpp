@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/dissertation/cause_grades.hpp"
 #include "analysis/dissertation/claims.hpp"
 
 namespace capsule::analysis {
@@ -25,10 +26,12 @@ const std::vector<TextChapter>& text_chapters();
 // appended when cut.
 std::string clip_text(const std::string& text, std::size_t limit);
 
-// The known causes of claim `key` as links "[C3](#cause-3), [C8](#cause-8)" ("" when none).
-std::string cause_links(const std::string& claim_key);
+// The known causes of claim `key`, each linked with the share of the gap it closes,
+// "[C3](#cause-3) 35 %, [C8](#cause-8) -42 %"; where the claim differs (`verdict`) and no cause
+// closes part of its gap, "unexplained" is added ("" for a claim that agrees with no cause).
+std::string cause_links(const std::string& claim_key, Verdict verdict, const std::vector<CauseGrade>& grades);
 
 // The tables, each under a "### Chapter n: ..." heading.
-std::string chapter_tables_markdown(const std::vector<ClaimResult>& rows);
+std::string chapter_tables_markdown(const std::vector<ClaimResult>& rows, const std::vector<CauseGrade>& grades);
 
 }  // namespace capsule::analysis

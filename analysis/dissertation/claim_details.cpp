@@ -7,7 +7,7 @@
 namespace capsule::analysis {
 
 std::string claim_details_markdown(const std::vector<ClaimResult>& rows, const std::string& results_dir,
-                                   const std::string& link_base) {
+                                   const std::string& link_base, const std::vector<CauseGrade>& grades) {
   std::string md;
   const auto verdicts = claim_verdicts(rows);
   std::size_t at = 0;  // rows of one claim are adjacent, in the order of claim_verdicts
@@ -29,8 +29,14 @@ std::string claim_details_markdown(const std::vector<ClaimResult>& rows, const s
     }
     for (const TextFigure* f : figures_of_claim(key))
       md += "- **Fig. " + f->number + "** (" + f->shows + "): " + figure_links(*f, results_dir, link_base) + ".\n";
-    for (const std::size_t n : causes_of_claim(key))
-      md += "- **Known cause** " + anchor_link(cause_label(n) + " " + known_deviations()[n - 1].topic, cause_anchor(n)) + ".\n";
+    bool explained = false;
+    for (const CauseGrade* g : grades_of_claim(grades, key)) {
+      md += "- **Known cause** " + anchor_link(cause_label(g->cause) + " " + known_deviations()[g->cause - 1].topic, cause_anchor(g->cause)) +
+            ": " + grade_sentence(*g) + ".\n";
+      explained = explained || explains(*g);
+    }
+    if ((verdict == ClaimVerdict::differs || verdict == ClaimVerdict::in_part) && !explained)
+      md += "- **Cause:** unexplained (no shipped probe measures a cause that closes a tenth of its gap or more).\n";
     md += "\n";
   }
   return md;

@@ -5,7 +5,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include "analysis/compare/bilinear_entries.hpp"
 #include "analysis/dissertation/rules.hpp"
+#include "analysis/report/report_context.hpp"
 
 namespace capsule::analysis {
 
@@ -48,6 +50,50 @@ std::pair<double, double> line(const std::vector<double>& x, const std::vector<d
   return {slope, my - slope * mx};
 }
 
+// {bilinear campaign/target/coefficient/level}: the first (finest) fit of the target, or its extrapolation.
+double bilinear_coefficient(const DissertationCampaign& c, const std::vector<std::string>& parts, const std::string& spec) {
+  const bool extrapolated = parts[3] == "extrapolated";
+  if (!extrapolated && parts[3] != "finest") throw std::runtime_error("{" + spec + "}: level " + parts[3] + " is neither finest nor extrapolated");
+  for (const BilinearEntry& e : read_bilinear_entries(c.name, c.fits)) {
+    if (e.target != parts[1]) continue;
+    const auto coefficient = [&](const std::string& name) {
+      if (extrapolated) {
+        const auto x = e.ladder_extrapolated.find(name);
+        if (x == e.ladder_extrapolated.end() || !std::isfinite(x->second))
+          throw std::runtime_error("{" + spec + "}: " + c.name + " has no extrapolation of " + name + " for " + parts[1]);
+        return x->second;
+      }
+      if (!e.fit.ok) throw std::runtime_error("{" + spec + "}: the bilinear fit of " + parts[1] + " failed");
+      for (const auto& p : e.fit.parameters)
+        if (p.name == name) return p.value;
+      throw std::runtime_error("{" + spec + "}: the bilinear fit has no coefficient " + name);
+    };
+    if (parts[2] == "b_over_a") return coefficient("b") / coefficient("a");
+    return coefficient(parts[2]);
+  }
+  throw std::runtime_error("{" + spec + "}: " + c.name + " has no bilinear fit of " + parts[1]);
+}
+
+// {at campaign/slug/series/kt}: the member file's series at kt (or at its marker t_stop).
+double series_at(const DissertationResults& results, const DissertationMember& m, const std::vector<std::string>& parts,
+                 const std::string& spec) {
+  std::string why;
+  const auto data = results.member_data(m, why);
+  if (!data) throw std::runtime_error("{" + spec + "}: " + why);
+  const auto kt = data->series.find("kt"), y = data->series.find(parts[2]);
+  if (kt == data->series.end() || y == data->series.end()) throw std::runtime_error("{" + spec + "}: " + m.slug + " records no " + parts[2]);
+  double at = std::nan("");
+  if (parts[3] == "stop") {
+    const auto t = data->markers.find("t_stop");
+    if (t != data->markers.end()) at = t->second;
+  } else {
+    at = std::stod(parts[3]);
+  }
+  if (!std::isfinite(at) || at < kt->second.front() || at > kt->second.back())
+    throw std::runtime_error("{" + spec + "}: kt " + parts[3] + " is outside " + m.slug + "'s series");
+  return interpolate_series(kt->second, y->second, at);
+}
+
 }  // namespace
 
 double measured_number(const DissertationResults& results, const std::string& spec) {
@@ -76,12 +122,15 @@ double measured_number(const DissertationResults& results, const std::string& sp
     const auto [slope, intercept] = line(x, y);
     return kind == "intercept" ? intercept : slope;
   }
+  if (kind == "bilinear" && parts.size() == 4) return bilinear_coefficient(campaign_of(results, parts[0], spec), parts, spec);
+  if (kind == "at" && parts.size() == 4)
+    return series_at(results, member_of(campaign_of(results, parts[0], spec), parts[1], spec), parts, spec);
   throw std::runtime_error("{" + spec + "}: not a measured-number placeholder (fit, r2: campaign/slug/column; intercept, slope, "
-                           "exponent: campaign/column/x/slug+slug)");
+                           "exponent: campaign/column/x/slug+slug; bilinear: campaign/target/coefficient/level; at: campaign/slug/series/kt)");
 }
 
 std::string fill_measured_numbers(const std::string& text, const DissertationResults& results, bool strict) {
-  static const char* const kinds[] = {"fit ", "r2 ", "intercept ", "slope ", "exponent "};
+  static const char* const kinds[] = {"fit ", "r2 ", "intercept ", "slope ", "exponent ", "bilinear ", "at "};
   std::string out;
   std::size_t at = 0;
   while (true) {

@@ -8,6 +8,13 @@
 //                                              parameter x over those members (>= 2)
 //   {exponent <campaign>/<column>/<x>/<slug>+<slug>...}
 //                                              the same in log-log: column ~ x^exponent
+//   {bilinear <campaign>/<target>/<coefficient>/<level>}
+//                                              a coefficient (a, b, c, or b_over_a) of the campaign's
+//                                              bilinear fit (95)-(96) of target ("response.k_tau_s")
+//                                              at its finest level, or Richardson-extrapolated over
+//                                              its ladder (level "finest" or "extrapolated")
+//   {at <campaign>/<slug>/<series>/<kt>}      a series of the member file ("D_xy") at time kt,
+//                                              linearly interpolated; kt "stop" is the marker t_stop
 // Each number is printed at three significant digits (short_number).
 #include <string>
 

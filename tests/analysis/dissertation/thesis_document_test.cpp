@@ -17,6 +17,7 @@
 #include "analysis/dissertation/chapter_tables.hpp"
 #include "analysis/dissertation/claim_texts.hpp"
 #include "analysis/dissertation/claims.hpp"
+#include "analysis/dissertation/cause_grades.hpp"
 #include "analysis/dissertation/deviations.hpp"
 #include "analysis/dissertation/document_links.hpp"
 #include "analysis/dissertation/figure_index.hpp"
@@ -296,14 +297,27 @@ TEST_CASE("Thesis document: prose is wrapped at 400 characters, list items inden
 
 TEST_CASE("Thesis document: the first screen says per chapter where the text holds and which differences are unexplained", "[analysis][dissertation]") {
   const auto row = claim_row;
-  // 5.1.3 ratios differ has known causes in deviations.md; "5.9 nothing" has none
-  const std::vector<ClaimResult> rows = {row("3.9 one", "3.1", Verdict::agrees), row("5.1.3 ratios differ", "5.1", Verdict::differs),
-                                         row("5.9 nothing", "5.2", Verdict::differs), row("5.9 open", "5.2", Verdict::cannot_tell)};
-  const std::string md = chapter_story_markdown(rows);
+  // "5.9 closed" has a cause that closes 40 % of its gap, "5.9 widened" one that widens it, "5.9 nothing" none
+  const std::vector<ClaimResult> rows = {row("3.9 one", "3.1", Verdict::agrees),      row("5.9 closed", "5.1", Verdict::differs),
+                                         row("5.9 widened", "5.2", Verdict::differs), row("5.9 nothing", "5.2", Verdict::differs),
+                                         row("5.9 open", "5.2", Verdict::cannot_tell)};
+  const auto grade = [](const std::string& key, double fraction) {
+    CauseGrade g;
+    g.cause = 8, g.gap.claim = key, g.measured = true, g.fraction = fraction;
+    return g;
+  };
+  const std::vector<CauseGrade> grades = {grade("5.9 closed", 0.4), grade("5.9 widened", -0.5)};
+  const std::string md = chapter_story_markdown(rows, grades);
   INFO(md);
   CHECK(md.find("- **Ch. 3**: the text holds in 1 of its 1 claim here; it does not in 0.") != std::string::npos);
-  CHECK(md.find("- **Ch. 5**: the text holds in 0 of its 3 claims here; it does not in 2; 1 cannot tell. Of those that differ: 1 with a known cause linked") !=
-        std::string::npos);
-  CHECK(md.find(", 1 unexplained (no cause linked): [5.9 nothing](#claim-5-9-nothing).") != std::string::npos);
+  CHECK(md.find("- **Ch. 5**: the text holds in 0 of its 4 claims here; it does not in 3; 1 cannot tell. Of those that differ: 1 with a "
+                "measured cause closing part of the gap (the most: [C8](#cause-8) " + known_deviations()[7].topic +
+                " closes 40 % of the gap of [5.9 closed](#claim-5-9-closed))") != std::string::npos);
+  CHECK(md.find(", 2 unexplained ([C8](#cause-8) measured: it widens or barely moves the gap): [5.9 widened](#claim-5-9-widened)") != std::string::npos);
   CHECK(md.find("Ch. 2") == std::string::npos);
+  // The chapter table's cause cell: the share closed, and "unexplained" where no cause closes part of the gap.
+  CHECK(cause_links("5.9 closed", Verdict::differs, grades) == "[C8](#cause-8) 40 %");
+  CHECK(cause_links("5.9 widened", Verdict::differs, grades) == "[C8](#cause-8) -50 %, unexplained");
+  CHECK(cause_links("5.9 nothing", Verdict::differs, grades) == "unexplained");
+  CHECK(cause_links("3.9 one", Verdict::agrees, grades).empty());
 }
