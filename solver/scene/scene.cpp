@@ -12,6 +12,7 @@
 #include "solver/ib/hydrodynamic_radius.hpp"
 #include "common/json_text.hpp"
 #include "solver/scene/run_bounds.hpp"
+#include "solver/scene/stretch_scene.hpp"
 #include "solver/scene/user_hints.hpp"
 
 namespace capsule {
@@ -472,8 +473,13 @@ void read_protocol_and_output(ObjectReader& r, Scene& s) {
   const std::string& source = r.source();
   {
     json proto = r.object("protocol", true);
-    ObjectReader p(proto, source, "protocol", {"shear", "recover"});
-    s.shear = read_phase(p.object("shear", true), source, "protocol.shear", true);
+    ObjectReader p(proto, source, "protocol", {"shear", "stretch", "recover"});
+    if (p.has("stretch")) {
+      if (p.has("shear")) p.fail("stretch", "a protocol shears or stretches, not both", "\"shear\" or \"stretch\"");
+      s.stretch = read_stretch(proto.at("stretch"), source, s, s.shear);
+    } else {
+      s.shear = read_phase(p.object("shear", true), source, "protocol.shear", true);
+    }
     s.recover = read_phase(p.object("recover", true), source, "protocol.recover", false);
     p.refuse_unknown();
   }
@@ -595,7 +601,9 @@ json Scene::to_json() const {
     else ph["bending_modulus_J"] = c.bending_modulus_J;
     if (c.temperature_K > 0) ph["temperature_K"] = c.temperature_K;
   }
-  j["protocol"] = {{"shear", phase_json(shear, true)}, {"recover", phase_json(recover, false)}};
+  // A stretch protocol in place of the shear; a scene without one is written as before.
+  if (stretch) j["protocol"] = {{"stretch", stretch_json(*stretch, shear)}, {"recover", phase_json(recover, false)}};
+  else j["protocol"] = {{"shear", phase_json(shear, true)}, {"recover", phase_json(recover, false)}};
   j["output"] = {{"interval_kt", output_interval_kt}, {"shapes_at_kt", shapes_at_kt},
                  {"snapshots", choice_name(snapshots)}};
   // Doubles that happen to be integral must still be written as doubles so that

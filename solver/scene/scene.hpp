@@ -11,6 +11,7 @@
 #include "solver/ib/membrane_update.hpp"
 #include "solver/scene/choices.hpp"
 #include "solver/scene/physical_cell.hpp"
+#include "solver/scene/stretch_load.hpp"
 #include "solver/scene/version.hpp"
 
 namespace capsule {
@@ -116,6 +117,9 @@ struct Scene {
   lbm::CollisionModel collision = scene_defaults(PhysicsVersion::current, 2).collision;
   PhaseSpec shear;
   PhaseSpec recover;
+  // 3D: the optical-tweezers protocol (protocol.stretch, solver/scene/stretch_scene.hpp) in place
+  // of the shear: walls at rest, the patches pulled until `shear`'s rule (time, or steady D_axial).
+  std::optional<StretchLoad> stretch;
   double output_interval_kt = 0.05;
   std::vector<double> shapes_at_kt;
   Snapshots snapshots = Snapshots::none;
