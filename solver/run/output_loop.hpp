@@ -111,7 +111,7 @@ std::string run_output_loop(Sim& sim, const Scene& scene, Protocol& protocol, io
 
   long first_step = 0;  // where in its output interval the loop starts
   bool resumed = false;
-  double last_D = NAN;  // D_xy of the last row
+  double last_D = NAN;  // the watched D of the last row (Protocol::watched)
   if (control.resume) {
     io::StateArchive& a = *control.resume;
     try {
@@ -168,13 +168,14 @@ std::string run_output_loop(Sim& sim, const Scene& scene, Protocol& protocol, io
       if (const std::string bad = sim.health(row); !bad.empty()) return unstable(bad);
       row["shear_on"] = protocol.shear_on() ? 1.0 : 0.0;
       row["shear_factor"] = protocol.shear_factor(sim.kt());
+      if (scene.protocol.stretch) row["force_on"] = protocol.load_on() ? 1.0 : 0.0;
       out.append(row, beta);
       while (next_shape < shapes.size() && shapes[next_shape] <= sim.kt() + 0.5 * scene.output.interval_kt) {
         write_shape(sim.kt());
         ++next_shape;
       }
-      protocol.observe(sim.kt(), row["D_xy"], row["theta"], beta.empty() ? 0.0 : beta[0]);
-      last_D = row["D_xy"];
+      protocol.observe(sim.kt(), row[protocol.watched()], row["theta"], beta.empty() ? 0.0 : beta[0]);
+      last_D = row[protocol.watched()];
       progress.set_D(last_D);
       if (out.rows() % 50 == 0 || std::chrono::duration<double>(Clock::now() - last_partial).count() > 30.0) {
         out.checkpoint();
@@ -197,6 +198,8 @@ std::string run_output_loop(Sim& sim, const Scene& scene, Protocol& protocol, io
       // precedes a row, so the row sees the whole field (max_speed).
       if constexpr (requires { sim.full_fields_next_step(); })
         if (i == steps_per_output - 1) sim.full_fields_next_step();
+      // A sim that pulls its membrane (a stretch protocol) is told whether the load is on.
+      if constexpr (requires { sim.set_load(true); }) sim.set_load(protocol.load_on());
       sim.step(protocol.shear_factor(sim.kt()));
       progress.tick(sim.steps(), sim.kt(), protocol);
     }

@@ -23,12 +23,13 @@ std::string after_note(double after_kt) { return after_kt > 0 ? " (crossings cou
 }  // namespace
 
 Protocol::Protocol(const Scene& scene)
-    : shear_(scene.protocol.shear), recover_(scene.protocol.recover),
+    : shear_(scene.protocol.shear), recover_(scene.protocol.recover), stretch_(scene.protocol.stretch.has_value()),
+      first_(stretch_ ? "stretch" : "shear"), measure_(stretch_ ? "D_axial" : "D_xy"),
       t_max_(nan_v), D_max_(nan_v), t_stop_(nan_v), D_stop_(nan_v),
       t_min_(nan_v), D_min_(nan_v), t_end_(nan_v), D_inf_(nan_v) {}
 
 double Protocol::shear_factor(double kt) const {
-  if (phase_ != Phase::shear) return 0.0;
+  if (phase_ != Phase::shear || stretch_) return 0.0;
   if (shear_.oscillatory_period_kt > 0) return std::sin(std::numbers::pi * kt / shear_.oscillatory_period_kt);
   return 1.0;
 }
@@ -70,10 +71,10 @@ void Protocol::observe(double kt, double D, double theta, double beta) {
 
 bool Protocol::shear_condition_met(double kt, double theta, double beta) {
   if (shear_.until == StopCondition::time) {
-    if (kt >= shear_.kt - time_slack) { note_ = "shear stopped at kt = " + num(shear_.kt); return true; }
+    if (kt >= shear_.kt - time_slack) { note_ = first_ + " stopped at kt = " + num(shear_.kt); return true; }
   } else if (shear_.until == StopCondition::steady) {
     if (steady(shear_.window_kt, shear_.tolerance, 0.0)) {
-      note_ = "shear stopped when D_xy was steady (range < " + num(shear_.tolerance) + " over " +
+      note_ = first_ + " stopped when " + measure_ + " was steady (range < " + num(shear_.tolerance) + " over " +
               num(shear_.window_kt) + " kt)";
       return true;
     }
@@ -99,7 +100,7 @@ void Protocol::observe_shear(double kt, double D, double theta, double beta) {
   bool stop = shear_condition_met(kt, theta, beta);
   if (!stop && shear_.until != StopCondition::time && kt >= shear_.max_kt - time_slack) {
     stop = true;
-    note_ = "shear stopped at max_kt = " + num(shear_.max_kt) + " before its condition (" + choice_name(shear_.until) + ") was met";
+    note_ = first_ + " stopped at max_kt = " + num(shear_.max_kt) + " before its condition (" + choice_name(shear_.until) + ") was met";
   }
   if (!stop) return;
   t_stop_ = kt;
@@ -131,13 +132,13 @@ void Protocol::observe_recovery(double kt, double D) {
     const double window = std::max(recover_.window_kt, recover_.window_fraction * since);
     if (steady(window, recover_.tolerance, t_stop_)) {
       end = true;
-      note_ += "; recovery ended when D_xy settled (range < " + num(recover_.tolerance) + " over the last " +
+      note_ += "; recovery ended when " + measure_ + " settled (range < " + num(recover_.tolerance) + " over the last " +
                num(window) + " kt)";
     }
   }
   if (!end && recover_.until != StopCondition::time && since >= recover_.max_kt - time_slack) {
     end = true;
-    note_ += "; recovery ended at max_kt = " + num(recover_.max_kt) + " before D_xy settled";
+    note_ += "; recovery ended at max_kt = " + num(recover_.max_kt) + " before " + measure_ + " settled";
   }
   if (end) {
     t_end_ = kt;
@@ -154,7 +155,7 @@ Protocol::Outlook Protocol::outlook() const {
   const double recover_span = recover_capped ? recover_.max_kt : recover_.kt;
   switch (phase_) {
     case Phase::shear:
-      o = {"shear", shear_end, shear_capped, shear_end + recover_span, shear_capped || recover_capped};
+      o = {first_, shear_end, shear_capped, shear_end + recover_span, shear_capped || recover_capped};
       break;
     case Phase::recover:
       o = {"recover", t_stop_ + recover_span, recover_capped, t_stop_ + recover_span, recover_capped};

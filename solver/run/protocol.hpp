@@ -4,6 +4,8 @@
 // interval and asks how fast the walls move. It also keeps the markers the fits need
 // (Sec. 3.1 and 4.1.1): t_max/D_max (largest D_xy under shear), t_stop/D_stop (shear
 // stopped), t_min/D_min (smallest D_xy after the stop), t_end/D_inf (end of recovery).
+// A stretch protocol (Scene::stretch) loads instead of shearing: the walls stay at rest, the
+// first phase ends by Scene::shear's rule and every D above is the axial diameter D_axial.
 #include <map>
 #include <string>
 #include <vector>
@@ -23,7 +25,11 @@ class Protocol {
   // One observation per output row. Advances the phase and updates the markers.
   void observe(double kt, double D, double theta, double beta);
 
-  bool shear_on() const { return phase_ == Phase::shear; }
+  bool shear_on() const { return phase_ == Phase::shear && !stretch_; }
+  // Stretch protocol: the patches are pulled (the first phase).
+  bool load_on() const { return phase_ == Phase::shear && stretch_; }
+  // The series the protocol watches: "D_xy", or "D_axial" under a stretch protocol.
+  const std::string& watched() const { return measure_; }
   bool finished() const { return phase_ == Phase::done; }
   // Upper bound on the run's length in kt (both phases at their caps).
   double max_total_kt() const;
@@ -68,6 +74,8 @@ class Protocol {
   static bool crossed(double previous, double current, double value, double period);
 
   PhaseSpec shear_, recover_;
+  bool stretch_ = false;
+  std::string first_, measure_;  // the first phase's name ("shear" or "stretch") and the watched series
   Phase phase_ = Phase::shear;
   std::vector<double> kt_, D_;
   double prev_theta_ = 0, prev_beta_ = 0;

@@ -45,6 +45,7 @@
 
 #include "solver/membrane3d/curvature.hpp"
 #include "solver/membrane3d/membrane_forces.hpp"
+#include "solver/membrane3d/optical_tweezers.hpp"
 #include "solver/membrane3d/phase_angles.hpp"
 #include "solver/membrane3d/shape_measures.hpp"
 #include "solver/membrane3d/shapes.hpp"
@@ -151,6 +152,7 @@ class Simulation3D {
   void step(double shear_factor) {
     const std::size_t n = mesh_.vertex_count();
     forces_.compute(mesh_, force_);
+    if (load_on_) m3::add_pulling_forces(patches_, pull_force_, force_);  // the beads (stretch protocol)
     auto t0 = Clock::now();
     double* p[3] = {fluid_.force(0), fluid_.force(1), fluid_.force(2)};
     // The force field is zero except where the last step spread: clear only there, then spread
@@ -178,6 +180,11 @@ class Simulation3D {
     }
     ++steps_;
   }
+
+  // Stretch protocol: whether the beads pull during the next steps (the output loop sets it).
+  void set_load(bool on) { load_on_ = on; }
+  const m3::PulledPatches& patches() const { return patches_; }
+  double pull_force() const { return pull_force_; }
 
   // The next step writes u and rho everywhere (the output loop calls this before a row).
   void full_fields_next_step() { full_fields_next_ = true; }
@@ -211,6 +218,17 @@ class Simulation3D {
         {"max_speed", std::sqrt(umax2)},
     };
     if (scene_.power_law.K > 0) std::tie(r["gamma_min"], r["gamma_max"]) = gamma_range();
+    if (scene_.protocol.stretch) {
+      // In units of the membrane's radius r_m (StretchLoad), and in um for a physical cell.
+      const m3::StretchDiameters sd = m3::stretch_diameters(mesh_);
+      const double r_m = scene_.resolution.a - scene_.resolution.marker_inset;
+      r["D_axial"] = sd.axial / r_m;
+      r["D_transverse"] = sd.transverse / r_m;
+      if (scene_.physical) {
+        r["D_axial_um"] = r["D_axial"] * scene_.physical->radius_um;
+        r["D_transverse_um"] = r["D_transverse"] * scene_.physical->radius_um;
+      }
+    }
     return r;
   }
 
@@ -347,7 +365,9 @@ class Simulation3D {
     const double r_m = a - s.resolution.marker_inset;
     const m3::Mesh unit = m3::unit_icosphere(s.resolution.mesh_level);
     const m3::Vec3 centre(0.5 * grid_.nx, 0.5 * grid_.ny, 0.5 * grid_.nz);
-    const double incline = 0.25 * std::numbers::pi;  // 45 degrees in the xy-plane (Sec. 2.5)
+    // 45 degrees in the xy-plane (Sec. 2.5); a stretched cell lies with its disc in the xz-plane,
+    // so that the pull along x is in the disc's plane, as the beads pull in the experiment.
+    const double incline = s.protocol.stretch ? 0.0 : 0.25 * std::numbers::pi;
     if (s.shape == Shape::sphere) mesh_ = m3::sphere_mesh(unit, r_m);
     else if (s.shape == Shape::biconcave) mesh_ = m3::biconcave_mesh(unit, r_m);
     else throw std::invalid_argument("3D shape must be sphere or biconcave, got '" + choice_name(s.shape) + "'");
@@ -394,6 +414,12 @@ class Simulation3D {
     }
     K_v_ = s.volume_penalty * units_.E_s / a;
     p.K_v = K_v_;
+    if (s.protocol.stretch) {
+      // The beads' patches on the start shape, and F = force E_s r_m in lattice units (StretchLoad).
+      patches_ = s.protocol.stretch->contact_diameter > 0 ? m3::patches_by_contact_diameter(mesh_, s.protocol.stretch->contact_diameter * r_m)
+                                                 : m3::patches_by_fraction(mesh_, s.protocol.stretch->patch_fraction);
+      pull_force_ = s.protocol.stretch->force * units_.E_s * r_m;
+    }
     forces_ = m3::MembraneForces(reference, mesh_, std::move(p));
   }
 
@@ -473,6 +499,9 @@ class Simulation3D {
   std::vector<double> U_previous_;
   long steps_ = 0;
   bool full_fields_next_ = false;
+  m3::PulledPatches patches_;  // stretch protocol: the beads' vertices and shares
+  double pull_force_ = 0;      // F in lattice units
+  bool load_on_ = false;
   Timings timings_;
 };
 
@@ -489,6 +518,30 @@ std::string snapshot_path(const std::string& member_path, double kt) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "_kt%08.3f.vtp", kt);
   return snapshot_base(member_path) + buf;
+}
+
+// The stretch protocol's load and measures, for the member file.
+void record_stretch(io::MemberWriter& out, const Scene& scene, const m3::PulledPatches& p, double F_lattice, int vertices) {
+  const StretchLoad& load = *scene.protocol.stretch;
+  out.set_attribute("protocol_measure", std::string("D_axial: the markers t_max ... D_inf and the steady and settled rules read the axial diameter"));
+  out.set_attribute("stretch_force", load.force);
+  out.set_attribute("stretch_force_convention", std::string("F / (E_s r_m): E_s of Ca (34), r_m = a - marker_inset the membrane's radius; the force on each bead"));
+  out.set_attribute("stretch_force_lattice", F_lattice);
+  if (scene.physical) {
+    const double pN = load.force_pN > 0 ? load.force_pN : load.force * physical_groups(*scene.physical, scene.law, scene.conventions.sls_viscosity).E_s *
+                                                              scene.physical->radius_um * 1e-6 * 1e12;
+    out.set_attribute("stretch_force_pN", pN);
+  }
+  out.set_attribute("stretch_patch", load.contact_diameter > 0
+                                         ? "vertices within " + std::to_string(load.contact_diameter / 2) + " r_m of each pole (contact diameter " +
+                                               std::to_string(load.contact_diameter) + " r_m)"
+                                         : "the " + std::to_string(load.patch_fraction) + " of the vertices nearest each pole");
+  out.set_attribute("stretch_patch_vertices", static_cast<long>(p.plus.size()));
+  out.set_attribute("stretch_patch_vertices_minus", static_cast<long>(p.minus.size()));
+  out.set_attribute("stretch_patch_vertex_fraction", static_cast<double>(p.plus.size()) / vertices);
+  const double r_m = scene.resolution.a - scene.resolution.marker_inset;
+  out.set_attribute("stretch_patch_area", p.plus_area / (r_m * r_m));  // on the start shape, in units of r_m^2
+  out.set_attribute("stretch_force_spread", std::string("each patch vertex carries F A_i / sum A (A_i its Voronoi area (83) on the start shape): a uniform traction over the patch"));
 }
 
 }  // namespace
@@ -580,6 +633,7 @@ std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, const Ru
           m3::write_pvd(snapshot_base(out.final_path()) + ".pvd", snapshots);  // a time series for ParaView
         }
       });
+  if (scene.protocol.stretch) record_stretch(out, scene, sim.patches(), sim.pull_force(), mesh.vertex_count());
   out.set_markers(protocol.markers());
   out.set_attribute("protocol", protocol.phase_note());
   out.set_attribute("steps", sim.steps());

@@ -11,6 +11,7 @@
 #include "solver/ib/hydrodynamic_radius.hpp"
 #include "common/json_text.hpp"
 #include "solver/scene/run_bounds.hpp"
+#include "solver/scene/stretch_scene.hpp"
 #include "solver/scene/user_hints.hpp"
 
 namespace capsule {
@@ -467,12 +468,18 @@ void read_resolution(ObjectReader& r, Scene& s, const SceneDefaults& defaults) {
   q.refuse_unknown();
 }
 
-// protocol: the shear phase, then the recovery.
-void read_protocol(ObjectReader& r, Scene::Protocol& protocol) {
+// protocol: the shear phase (or the stretch, 3D: solver/scene/stretch_scene.hpp), then the
+// recovery. `scene`'s dim, law and physical block are already read.
+void read_protocol(ObjectReader& r, const Scene& scene, Scene::Protocol& protocol) {
   const std::string& source = r.source();
   json proto = r.object("protocol", true);
-  ObjectReader p(proto, source, "protocol", {"shear", "recover"});
-  protocol.shear = read_phase(p.object("shear", true), source, "protocol.shear", true);
+  ObjectReader p(proto, source, "protocol", {"shear", "stretch", "recover"});
+  if (p.has("stretch")) {
+    if (p.has("shear")) p.fail("stretch", "a protocol shears or stretches, not both", "\"shear\" or \"stretch\"");
+    protocol.stretch = read_stretch(proto.at("stretch"), source, scene, protocol.shear);
+  } else {
+    protocol.shear = read_phase(p.object("shear", true), source, "protocol.shear", true);
+  }
   protocol.recover = read_phase(p.object("recover", true), source, "protocol.recover", false);
   p.refuse_unknown();
 }
@@ -502,7 +509,7 @@ Scene Scene::from_json(const json& j, const std::string& source) {
   read_physical(r, s);
   read_power_law(r, s, defaults);
   read_resolution(r, s, defaults);
-  read_protocol(r, s.protocol);
+  read_protocol(r, s, s.protocol);
   read_output(r, s.output);
   r.refuse_unknown();
   ignore_other_dimension(s);
@@ -614,7 +621,9 @@ json phase_json(const PhaseSpec& p, bool shear) {
   return j;
 }
 
+// A stretch protocol in place of the shear; a scene without one is written as before.
 json protocol_json(const Scene::Protocol& p) {
+  if (p.stretch) return {{"stretch", stretch_json(*p.stretch, p.shear)}, {"recover", phase_json(p.recover, false)}};
   return {{"shear", phase_json(p.shear, true)}, {"recover", phase_json(p.recover, false)}};
 }
 

@@ -1,7 +1,10 @@
 #pragma once
 // The scene's `protocol` section: shear until a condition, then recover until a condition
 // (docs/guide/scenes.md "Keys"; run by solver/run/protocol.hpp).
+#include <optional>
+
 #include "solver/scene/choices.hpp"
+#include "solver/scene/stretch_load.hpp"
 
 namespace capsule {
 
@@ -27,8 +30,11 @@ struct PhaseSpec {
 };
 
 struct SceneProtocol {
-  PhaseSpec shear;
+  PhaseSpec shear;  // with a stretch: the loading phase's rule (until time, or steady D_axial)
   PhaseSpec recover;
+  // 3D: the optical-tweezers load (protocol.stretch, solver/scene/stretch_scene.hpp) in place of
+  // the shear: walls at rest, the patches pulled until `shear`'s rule.
+  std::optional<StretchLoad> stretch;
 };
 
 }  // namespace capsule

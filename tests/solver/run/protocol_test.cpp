@@ -224,3 +224,22 @@ TEST_CASE("the protocol's outlook names the phase and when it ends at the latest
   CHECK(o.phase_end_kt == Approx(5.0));
   CHECK(!o.phase_end_is_cap);
 }
+
+TEST_CASE("a stretch protocol loads instead of shearing, watches D_axial and releases when it is steady", "[protocol][stretch]") {
+  json j = {{"dim", 3}, {"shape", "sphere"}, {"Ca", 0.05}, {"E_b", 0.0}, {"V", 1.0}, {"eta", 0.0},
+            {"protocol", {{"stretch", {{"force", 0.1}, {"until", "steady"}, {"tolerance", 1e-3}, {"window_kt", 1.0}}},
+                          {"recover", {{"until", "time"}, {"kt", 2}}}}}};
+  Protocol p(Scene::from_json(j, "test"));
+  CHECK(p.watched() == "D_axial");
+  CHECK(p.shear_factor(0.0) == 0.0);  // the walls stay at rest
+  CHECK(p.load_on());
+  CHECK(!p.shear_on());
+  CHECK(p.outlook().phase == "stretch");
+  drive(p, [&](double t, bool) { return p.load_on() ? 2.0 + 0.2 * (1 - std::exp(-t)) : 2.0; });
+  const auto m = p.markers();
+  // Steady when the range over the last kt, 0.2 e^-t (e - 1), is below 1e-3: from t = 5.840, the row at 5.85.
+  CHECK(m.at("t_stop") == Approx(5.85).margin(1e-9));
+  CHECK(m.at("t_end") == Approx(m.at("t_stop") + 2.0).margin(1e-9));
+  CHECK(p.phase_note().rfind("stretch stopped when D_axial was steady", 0) == 0);
+  CHECK(!p.load_on());
+}
