@@ -479,7 +479,8 @@ class Simulation3D {
 // Seconds of one part of a step: the difference of an accumulated timer over the measurement.
 double per_step(double after, double before, long steps) { return steps > 0 ? (after - before) / double(steps) : 0.0; }
 
-// <member>_kt0001.000.vtp beside the member file; <member>.pvd collects them.
+}  // namespace
+
 std::string snapshot_base(const std::string& member_path) {
   std::string base = member_path;
   if (base.size() > 3 && base.substr(base.size() - 3) == ".h5") base.resize(base.size() - 3);
@@ -491,7 +492,6 @@ std::string snapshot_path(const std::string& member_path, double kt) {
   return snapshot_base(member_path) + buf;
 }
 
-}  // namespace
 
 StepSplit3D time_steps3d(const Scene& scene, long warmup_steps, long steps) {
   Simulation3D sim(scene);
