@@ -19,7 +19,7 @@ Command add_shapes_command(CLI::App& capsule) {
       "docs/guide/member-files.md \"Shapes of a finished member\".\n"
       "Examples:\n"
       "  capsule shapes results/demo/members/<member> --at-kt 0.5,1,2\n"
-      "  capsule shapes results/ch3_ca/members/<member> --at-kt 2 --snapshots vtk -o /tmp/ca01.h5\n"
+      "  capsule shapes results/ch3_ca/members/<member> --at-kt 2 --snapshots vtk -o ca_shapes.h5\n"
       "Exit status: 0 written, 1 the rerun failed or does not reproduce the member (nothing written),\n"
       "2 bad member folder, time, output path or command line (nothing run).");
   app.add_option("member", o->member, "the member's folder (results/<campaign>/members/<member>) or a member file")
