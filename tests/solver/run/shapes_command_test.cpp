@@ -211,6 +211,15 @@ TEST_CASE("capsule shapes refuses what is not a finished member and times outsid
   refused(dir / "nowhere", "--at-kt 0.5", "no such member folder");
   CHECK(folder_contents(member) == before);
 
+  // scene.json must be the scene member.h5 ran; its output keys may differ.
+  nlohmann::json edited = tiny_2d();
+  edited["output"]["shapes_at_kt"] = {0.5};
+  write_scene(member, "scene", edited);
+  CHECK(shapes(member, "--at-kt 0.5 -q").exit_code == 0);
+  edited["Ca"] = 0.07;
+  write_scene(member, "scene", edited);
+  refused(member, "--at-kt 0.5", "scene.json: not the scene " + (member / "member.h5").string() + " ran (key Ca: 0.07 in scene.json");
+
   // A member killed before its end: only member.h5.partial and its restart point.
   const fs::path killed = dir / "killed";
   fs::create_directories(killed);
