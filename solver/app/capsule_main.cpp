@@ -1,5 +1,5 @@
 // capsule: runs one scene (one member of a study) and writes one member file; beside it the
-// subcommands check, version, bench, reference-bim, rigid-sphere and rigid-circle (CLI11).
+// subcommands check, version, units, shapes, bench, reference-bim, rigid-sphere and rigid-circle (CLI11).
 // Thin command line over the solver library; all physics lives in solver/.
 #include <CLI/CLI.hpp>
 #include <iostream>
@@ -7,10 +7,10 @@
 #include <nlohmann/json.hpp>
 
 #include "solver/app/bench_command.hpp"
-#include "solver/app/bench_command.hpp"
 #include "common/cli_support.hpp"
 #include "solver/app/reference_bim_command.hpp"
 #include "solver/app/rigid_sphere_command.hpp"
+#include "solver/app/shapes_command.hpp"
 #include "solver/app/units_command.hpp"
 #include "solver/scene/memory_estimate.hpp"
 #include "solver/run/run_member.hpp"
@@ -77,7 +77,8 @@ int main(int argc, char** argv) {
   app.footer(std::string("Examples:\n"
                          "  capsule check tests/data/scenes/circle_quick_2d.json\n"
                          "  capsule tests/data/scenes/circle_quick_2d.json -o quick.h5\n"
-                         "  capsule results/demo/members/<member>/scene.json -o m.h5 --checkpoint-seconds 600\n") +
+                         "  capsule results/demo/members/<member>/scene.json -o m.h5 --checkpoint-seconds 600\n"
+                         "  capsule shapes results/demo/members/<member> --at-kt 0.5,1,2   shapes of a finished member\n") +
              exit_codes);
   app.set_version_flag("--version", std::string("capsule ") + capsule::build::code_version + " (physics version " +
                                         capsule::physics_version + ")",
@@ -87,6 +88,7 @@ int main(int argc, char** argv) {
   commands.push_back(add_check_command(app));
   commands.push_back(add_version_command(app));
   commands.push_back(capsule::cli::add_units_command(app));
+  commands.push_back(capsule::cli::add_shapes_command(app));
   commands.push_back(capsule::cli::add_bench_command(app));
   commands.push_back(capsule::cli::add_reference_bim_command(app));
   commands.push_back(capsule::cli::add_rigid_sphere_command(app));
@@ -112,8 +114,8 @@ int main(int argc, char** argv) {
     if (c.app->parsed()) return c.run();
   if (opt.scene_path.empty() || opt.output_path.empty()) {
     std::cerr << "capsule: " << (opt.scene_path.empty() ? "a scene file" : "-o MEMBER.h5")
-              << " is required to run a scene (or a command: check, version, bench, reference-bim, rigid-sphere, "
-                 "rigid-circle); see capsule --help\n";
+              << " is required to run a scene (or a command: check, version, units, shapes, bench, reference-bim, "
+                 "rigid-sphere, rigid-circle); see capsule --help\n";
     return 2;
   }
   return capsule::run_member(opt);

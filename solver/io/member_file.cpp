@@ -158,7 +158,13 @@ void MemberWriter::add_shape(double kt, const std::vector<double>& xyz, int dim,
   if (!triangles.empty()) triangles_ = triangles;
 }
 
-void MemberWriter::write(const std::string& path, const std::string& status) const {
+std::vector<double> MemberWriter::shape_times() const {
+  std::vector<double> kt;
+  for (const auto& s : shapes_) kt.push_back(s.kt);
+  return kt;
+}
+
+void MemberWriter::write(const std::string& path, const std::string& status, bool with_rows) const {
   ContentDigest digest;
   Handle file = create_checked_file(path);
   if (!file.ok()) fail(path, "cannot create the member file");
@@ -177,7 +183,7 @@ void MemberWriter::write(const std::string& path, const std::string& status) con
       digest_attribute(digest, "@" + name, static_cast<std::int64_t>(std::get<long>(value)));
     }
   }
-  {
+  if (with_rows) {
     Handle series(H5Gcreate2(file, "series", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
     for (const auto& c : columns_) {
       write_matrix(series, c, series_.at(c).data(), rows_, 0, path);
@@ -202,7 +208,7 @@ void MemberWriter::write(const std::string& path, const std::string& status) con
       if (has_kt && c != "kt") check(H5DSattach_scale(set, kt, 0), path, "cannot attach kt to series/" + c);
     }
   }
-  {
+  if (with_rows) {
     Handle markers(H5Gcreate2(file, "markers", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
     for (const auto& [name, v] : markers_) {
       write_scalar_attr(markers, name, v, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, path);
@@ -256,7 +262,13 @@ void MemberWriter::write_then_rename(const std::string& status, const std::strin
                      [&] { require_ownership("rename over " + to); });
 }
 
-void MemberWriter::checkpoint() { write_then_rename("running", partial_path()); }
+void MemberWriter::checkpoint() {
+  if (!in_memory_) write_then_rename("running", partial_path());
+}
+
+void MemberWriter::write_shapes_file(const std::string& path) const {
+  replace_atomically(path, [&](const std::string& tmp) { write(tmp, "shapes", /*with_rows=*/false); });
+}
 
 void MemberWriter::finish(const std::string& status) {
   write_then_rename(status, partial_path());

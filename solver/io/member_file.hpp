@@ -36,11 +36,22 @@ class MemberWriter {
   void add_shape(double kt, const std::vector<double>& xyz, int dim, const std::vector<int>& triangles = {});
 
   std::size_t rows() const { return rows_; }
+  const std::map<std::string, std::vector<double>>& series() const { return series_; }
+  const std::vector<std::vector<double>>& beta() const { return beta_; }
+  void clear_shapes() { shapes_.clear(); }
+  std::vector<double> shape_times() const;  // the kt of each shape held
+  const std::map<std::string, std::variant<std::string, double, long>>& attributes() const { return attributes_; }
   const std::string& final_path() const { return final_path_; }
   std::string partial_path() const { return final_path_ + ".partial"; }
 
   void checkpoint();                       // rewrite <path>.partial, status "running"
   void finish(const std::string& status);  // write status, rename .partial -> final
+  // No .partial: checkpoint() writes nothing (a rerun whose rows are only compared, `capsule shapes`).
+  void hold_in_memory() { in_memory_ = true; }
+  // The shape file of `capsule shapes` (docs/guide/member-files.md "Shapes of a finished member"):
+  // the root attributes with status "shapes" and /shapes as a member file lays them out, no
+  // series and no markers; written atomically to `path`, content hash included (read_member reads it).
+  void write_shapes_file(const std::string& path) const;
 
   // Restart points (solver/run/checkpoint.hpp): the rows, tracked angles and shapes written
   // so far, under names "member.*". Attributes are not saved: the run sets them again.
@@ -48,7 +59,7 @@ class MemberWriter {
   void restore_rows(const StateArchive& archive);  // replaces what this writer holds
 
  private:
-  void write(const std::string& path, const std::string& status) const;
+  void write(const std::string& path, const std::string& status, bool with_rows = true) const;
   void write_then_rename(const std::string& status, const std::string& to) const;
 
   std::string final_path_;
@@ -65,6 +76,7 @@ class MemberWriter {
   std::vector<Shape> shapes_;
   std::vector<int> triangles_;
   std::size_t rows_ = 0;
+  bool in_memory_ = false;
 };
 
 struct MemberData {

@@ -83,7 +83,8 @@ inline void restore_protocol(const io::StateArchive& a, Protocol& p) {
 // steps(), health(row) (empty when healthy), step(shear_factor), save_state(archive),
 // restore_state(archive) and optionally failure() (a problem found between outputs) and
 // full_fields_next_step() (called before the last step of each output interval).
-// Returns "complete" or "unstable at kt = X: reason"; throws SimulatedKill at the test step.
+// Returns "complete", "unstable at kt = X: reason" or (control.stop_after_last_shape)
+// kShapesWritten; throws SimulatedKill at the test step.
 //
 // Restart points are written between two steps (anywhere inside an output interval): they
 // hold the simulation, the protocol, the rows so far and the step's place in its interval,
@@ -121,6 +122,14 @@ std::string run_output_loop(Sim& sim, const Scene& scene, Protocol& protocol, io
       restore_protocol(a, protocol);
       out.restore_rows(a);
       next_shape = static_cast<std::size_t>(a.integer("loop.next_shape"));
+      if (control.stop_after_last_shape) {
+        out.clear_shapes();
+        const double last_row_kt = out.rows() > 0 ? out.series().at("kt").back() : -1.0;
+        if (!shapes.empty() && shapes.front() <= last_row_kt + 0.5 * scene.output.interval_kt)
+          throw std::runtime_error("restart point: its last row (kt = " + std::to_string(last_row_kt) +
+                                   ") is past the first shape asked for");
+        next_shape = 0;
+      }
       first_step = static_cast<long>(a.integer("loop.interval_step"));
       last_D = a.number("loop.D_xy");
       checkpoints = static_cast<long>(a.integer("loop.checkpoints"));
@@ -174,6 +183,7 @@ std::string run_output_loop(Sim& sim, const Scene& scene, Protocol& protocol, io
         write_shape(sim.kt());
         ++next_shape;
       }
+      if (control.stop_after_last_shape && next_shape == shapes.size()) return kShapesWritten;
       protocol.observe(sim.kt(), row[protocol.watched()], row["theta"], beta.empty() ? 0.0 : beta[0]);
       last_D = row[protocol.watched()];
       progress.set_D(last_D);

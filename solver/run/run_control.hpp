@@ -18,6 +18,13 @@ struct RunControl {
   // Adds the run's identity and counters (wall time so far, restarts) to a restart point.
   std::function<void(io::StateArchive&)> add_run_state;
   io::StateArchive* resume = nullptr;  // the restart point to continue from, or none
+  // A rerun for shapes only (`capsule shapes`, solver/run/shape_rerun.hpp): the loop returns
+  // kShapesWritten after the row that stores the last shape of scene.output.shapes_at_kt, and a restart
+  // point of the member's own run is continued with this scene's shapes (the member's are dropped;
+  // one past the first shape asked for is refused).
+  bool stop_after_last_shape = false;
 };
+
+inline constexpr const char* kShapesWritten = "shapes written";
 
 }  // namespace capsule

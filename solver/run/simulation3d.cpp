@@ -508,7 +508,8 @@ class Simulation3D {
 // Seconds of one part of a step: the difference of an accumulated timer over the measurement.
 double per_step(double after, double before, long steps) { return steps > 0 ? (after - before) / double(steps) : 0.0; }
 
-// <member>_kt0001.000.vtp beside the member file; <member>.pvd collects them.
+}  // namespace
+
 std::string snapshot_base(const std::string& member_path) {
   std::string base = member_path;
   if (base.size() > 3 && base.substr(base.size() - 3) == ".h5") base.resize(base.size() - 3);
@@ -519,6 +520,8 @@ std::string snapshot_path(const std::string& member_path, double kt) {
   std::snprintf(buf, sizeof buf, "_kt%08.3f.vtp", kt);
   return snapshot_base(member_path) + buf;
 }
+
+namespace {
 
 // The stretch protocol's load and measures, for the member file.
 void record_stretch(io::MemberWriter& out, const Scene& scene, const m3::PulledPatches& p, double F_lattice, int vertices) {

@@ -19,6 +19,11 @@ struct StepSplit3D {
 };
 StepSplit3D time_steps3d(const Scene& scene, long warmup_steps, long steps);
 
+// Snapshots (scene output.snapshots): <member>_kt0001.000.vtp beside the member file, and
+// <member>.pvd (snapshot_base + ".pvd") collecting them; <member> is the path less ".h5".
+std::string snapshot_base(const std::string& member_path);
+std::string snapshot_path(const std::string& member_path, double kt);
+
 // Runs the scene to the end of its protocol, appending rows to `out`.
 // Returns the final status: "complete" or "unstable at kt = X: reason".
 std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, const RunControl& control);
