@@ -251,7 +251,7 @@ TEST_CASE("Chapter 3 claims: the sphere's times against eta like those against V
   SECTION("no eta sweep cannot tell") { CHECK(judge().verdict == Verdict::cannot_tell); }
 }
 
-TEST_CASE("Chapter 3 claims: k tau_s's growth slows as Ca rises; D_xy at the stop falls with E_b and with V", "[analysis][dissertation]") {
+TEST_CASE("Chapter 3 claims: k tau_s's growth slows as Ca rises - D_xy at the stop falls with E_b and with V", "[analysis][dissertation]") {
   TempDir tmp("dissertation_claims_trends");
   const auto judge = [&](const std::string& section, const std::string& words) {
     return find_claim(evaluate_claims(DissertationResults(tmp.path.string())), section, words);

@@ -74,7 +74,7 @@ TEST_CASE("Chapter 4 claims: (87)-(88) fit with R^2 > 0.95, the majority above 0
   }
 }
 
-TEST_CASE("Chapter 4 claims: tank-treading k tau_R1 slight in E_b and weak in V; k tau_R2 independent of eta", "[analysis][dissertation]") {
+TEST_CASE("Chapter 4 claims: tank-treading k tau_R1 slight in E_b and weak in V - k tau_R2 independent of eta", "[analysis][dissertation]") {
   TempDir tmp("dissertation_claims_tt_params");
   const std::vector<double> eb{0.0, 0.0014, 0.0028, 0.005}, v{0.5, 1.0, 2.0}, eta{0.0, 3.0, 6.0, 12.0};
   SECTION("the text's pattern agrees") {

@@ -818,7 +818,7 @@ TEST_CASE("Dissertation claims: 5.2.1 gamma range, gamma_max varies by less than
   CHECK(split.measured.find("the two finest levels disagree") != std::string::npos);
 }
 
-TEST_CASE("Dissertation claims: 4.1.2 R2 judges R^2; a (90) fit whose times are not determined has none", "[analysis][dissertation]") {
+TEST_CASE("Dissertation claims: 4.1.2 R2 judges R^2 - a (90) fit whose times are not determined has none", "[analysis][dissertation]") {
   TempDir tmp("dissertation_claims_r2_undetermined");
   // Three tumbling members (no member files: their fits.json entries are judged as recorded); the
   // third's (90) fit has R^2 `third_r2`, or is not determined when third_r2 < 0.
@@ -1004,7 +1004,7 @@ TEST_CASE("Dissertation claims: Figs. 1 and 2, the circle against Sui et al. wit
         Verdict::cannot_tell);
 }
 
-TEST_CASE("Dissertation claims: Fig. 8, Le's curve above at E_b = 0 only; Fig. 9, above Ramanujan and Pozrikidis at V = 5", "[analysis][dissertation]") {
+TEST_CASE("Dissertation claims: Fig. 8, Le's curve above at E_b = 0 only - Fig. 9, above Ramanujan and Pozrikidis at V = 5", "[analysis][dissertation]") {
   TempDir tmp("dissertation_claims_fig8");
   const std::vector<std::pair<std::string, double>> eb{{"Eb0", 0.0}, {"Eb0.05", 0.05}};
   const auto fig8 = [&](double curve_at_0, double worst_at_005) {
@@ -1119,7 +1119,7 @@ std::vector<ClaimResult> judge_oscillatory(const std::filesystem::path& root, co
 
 }  // namespace
 
-TEST_CASE("Dissertation claims: 5.2.1 damped, smaller n oscillates and settles later; n = 1 rises without oscillation", "[analysis][dissertation]") {
+TEST_CASE("Dissertation claims: 5.2.1 damped, smaller n oscillates and settles later - n = 1 rises without oscillation", "[analysis][dissertation]") {
   TempDir tmp("dissertation_claims_damped");
   const auto judge = [&](double decay_032) {
     const auto claims = judge_powerlaw(tmp.path, {{"n1", "n", {{"power_law.n", 1.0}}, 0.0, 1.0},
@@ -1156,7 +1156,7 @@ TEST_CASE("Dissertation claims: 5.2.1 both oscillate at the largest K and mu_s, 
   CHECK(judge(0.0, false).verdict == Verdict::cannot_tell);
 }
 
-TEST_CASE("Dissertation claims: 5.2.1 n and K, D_xy falls with K at n = 1; cannot tell without the sweep", "[analysis][dissertation]") {
+TEST_CASE("Dissertation claims: 5.2.1 n and K, D_xy falls with K at n = 1 - cannot tell without the sweep", "[analysis][dissertation]") {
   TempDir tmp("dissertation_claims_n_K");
   const auto judge = [&](double D_at_50) {
     return find_claim(judge_powerlaw(tmp.path, {{"K10", "K1", {{"power_law.n", 1.0}, {"power_law.K", 10.0}}, 0.0, 1.0, 0.2},
@@ -1230,7 +1230,7 @@ std::vector<ClaimResult> judge_tracked(const std::filesystem::path& root, const 
 
 }  // namespace
 
-TEST_CASE("Dissertation claims: 4.1.1 Fig. 22, the element nearly still from A to B; memory with bending only", "[analysis][dissertation]") {
+TEST_CASE("Dissertation claims: 4.1.1 Fig. 22, the element nearly still from A to B - memory with bending only", "[analysis][dissertation]") {
   TempDir tmp("dissertation_claims_fig22");
   {
     const auto c = judge_tracked(tmp.path, {{"eta6", "eta", 0.0014, 6.0, 0.44, 0.05}, {"Eb0", "E_b", 0.0, 0.0, 0.5, 0.7}});

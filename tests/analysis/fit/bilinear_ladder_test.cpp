@@ -132,7 +132,7 @@ TEST_CASE("bilinear over a resolution ladder: one fit per level, finest first, c
   CHECK(r->ladder_error.at("c") == Approx(0.1).epsilon(0.05));
 }
 
-TEST_CASE("bilinear ladder of two levels assumes the order and says so; one level refuses", "[analysis]") {
+TEST_CASE("bilinear ladder of two levels assumes the order and says so - one level refuses", "[analysis]") {
   TempDir tmp("bilinear_ladder2");
   write_report(ladder_campaign(tmp.path, {7, 10}, false));
   const nlohmann::json fits = nlohmann::json::parse(slurp(tmp.path / "report" / "fits.json"));

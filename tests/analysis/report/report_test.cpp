@@ -258,7 +258,7 @@ TEST_CASE("write_report on a campaign with no member files says so instead of fa
   CHECK(nlohmann::json::parse(slurp(tmp.path / "report" / "fits.json"))["members"].empty());
 }
 
-TEST_CASE("a time table in seconds divides k tau by the physical cell's shear rate; a member without one says why", "[analysis]") {
+TEST_CASE("a time table in seconds divides k tau by the physical cell's shear rate - a member without one says why", "[analysis]") {
   TempDir tmp("seconds");
   ReportRequest req;
   req.campaign_name = "cells";

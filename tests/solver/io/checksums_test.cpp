@@ -97,7 +97,7 @@ TEST_CASE("one flipped bit in a member file's series, shapes or markers is refus
   fs::remove_all(dir);
 }
 
-TEST_CASE("a member file without a content hash is refused unless legacy files are asked for; a missing series is named",
+TEST_CASE("a member file without a content hash is refused unless legacy files are asked for - a missing series is named",
           "[io][checksum]") {
   const auto dir = fresh_dir("old");
   const std::string path = write_member(dir);

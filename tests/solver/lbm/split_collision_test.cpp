@@ -76,7 +76,7 @@ void compare(double& worst_f, double& worst_u) {
 // loses ~2 digits of the deviation that the shifted form keeps).
 // Float: one float rounding of the shifted populations and of rho = 1 + drho: ~1e-6 of the
 // deviation (measured ~3e-7), u to ~1e-7 relative.
-TEST_CASE("Split collision equals the reference MRT collision (D2Q9, D3Q19; double, float)", "[lbm]") {
+TEST_CASE("Split collision equals the reference MRT collision (D2Q9, D3Q19 - double, float)", "[lbm]") {
   double wf, wu;
   compare<D2Q9, double>(wf, wu);
   INFO("D2Q9 double " << wf << " " << wu);
@@ -99,7 +99,7 @@ TEST_CASE("Split collision equals the reference MRT collision (D2Q9, D3Q19; doub
 // The two-relaxation-time rates (resolution.collision = trt): the split kernel's even/odd form
 // against the reference moment-space collision with every even non-conserved moment at s_nu and
 // every odd one at trt_odd_rate(s_nu). Same bounds and reasons as above.
-TEST_CASE("Split collision equals the reference collision with the TRT rates (D2Q9, D3Q19; double, float)", "[lbm]") {
+TEST_CASE("Split collision equals the reference collision with the TRT rates (D2Q9, D3Q19 - double, float)", "[lbm]") {
   double wf, wu;
   compare<D2Q9, double, CollisionModel::trt>(wf, wu);
   INFO("D2Q9 double " << wf << " " << wu);
@@ -122,7 +122,7 @@ TEST_CASE("Split collision equals the reference collision with the TRT rates (D2
 // The product Lambda = (1/s_nu - 1/2)(1/s_odd - 1/2) of the odd moments' rates: 3/16 for TRT at
 // every viscosity; the text's D2Q9 heat-flux rate (9) is 1/12 at every viscosity (so 2D's MRT is
 // a TRT), while D3Q19's s_q = s_nu gives (tau - 1/2)^2, which grows with a node's viscosity.
-TEST_CASE("TRT odd rate: Lambda = 3/16 at every viscosity; the D2Q9 rate (9) is Lambda = 1/12", "[lbm]") {
+TEST_CASE("TRT odd rate: Lambda = 3/16 at every viscosity - the D2Q9 rate (9) is Lambda = 1/12", "[lbm]") {
   for (double tau : {0.51, 0.7, 1.0, 1.5, 3.0, 5.5, 10.5}) {
     const double s_minus = trt_odd_rate(1.0 / tau);
     CHECK(s_minus > 0.0);

@@ -95,7 +95,7 @@ TEST_CASE("phase angles are zero for a rigid rotation and follow tank-treading",
   }
 }
 
-TEST_CASE("VTK XML snapshot holds the mesh and its fields; a field of the wrong size is refused", "[membrane3d]") {
+TEST_CASE("VTK XML snapshot holds the mesh and its fields - a field of the wrong size is refused", "[membrane3d]") {
   const Mesh m = sphere_mesh(unit_icosphere(1), 2.0);
   const std::string path = "membrane3d_test_snapshot.vtp";
   write_vtp(path, m, {{"kappa", 1, std::vector<double>(m.vertex_count(), 0.5)}},

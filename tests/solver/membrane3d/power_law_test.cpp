@@ -79,7 +79,7 @@ TEST_CASE("power law: the surface shear rate of a linear flow is exact at every 
   CHECK(worst < 1e-12 * k * 1e3);  // round-off only: centred differences and interpolation are exact here
 }
 
-TEST_CASE("power law: simple shear on a sphere gives the analytic surface shear rate; rotation gives none", "[membrane3d]") {
+TEST_CASE("power law: simple shear on a sphere gives the analytic surface shear rate - rotation gives none", "[membrane3d]") {
   Setup s;
   const double k = 1e-3;
   // u = (k y, 0, 0), S = (k/2)(e_x e_y + e_y e_x). With P = I - n n, 2 tr (P S P)^2 =

@@ -45,7 +45,7 @@ TEST_CASE("rigid circle: freely rotating, a steady stresslet of a circle about 0
   CHECK(a_S - 4.0 == Approx(gap->c0 + gap->c1 / 4.0).margin(0.1));
 }
 
-TEST_CASE("rigid circle: a rigid rotation adds no stresslet; holding the circle makes a torque of the sign of the flow's spin", "[rigid_sphere]") {
+TEST_CASE("rigid circle: a rigid rotation adds no stresslet - holding the circle makes a torque of the sign of the flow's spin", "[rigid_sphere]") {
   // Held (spin 0) the tethered markers creep in their slow modes, so the held circle is read
   // early (kt 2), where its stresslet is 0.7 % below the free one's at a = 4.
   const RigidShellResult held = run_rigid_circle(ci_circle(0.0, 2));

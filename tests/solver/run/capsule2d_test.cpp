@@ -329,7 +329,7 @@ TEST_CASE("single precision is selectable in a 2D scene and agrees with double",
   CHECK(std::abs(D_single / D_double - 1.0) < 1e-3);
 }
 
-TEST_CASE("resolution.marker_inset in 2D: the nodes on a - inset, bending that of their own circle; 0 by default", "[capsule2d]") {
+TEST_CASE("resolution.marker_inset in 2D: the nodes on a - inset, bending that of their own circle - 0 by default", "[capsule2d]") {
   // The scene's default keeps the nodes on a (an inset by the circle's stresslet gap makes the 2D
   // error larger: docs/findings/immersed_boundary_error_budget.md "In 2D"); a number or the rule
   // puts them inside. The mean node radius of the undeformed circle is exact to rounding.

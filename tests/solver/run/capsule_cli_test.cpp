@@ -104,7 +104,7 @@ TEST_CASE("capsule command-line errors exit 2, and --help documents the exit sta
   fs::remove_all(dir);
 }
 
-TEST_CASE("capsule reference-bim writes a summary row and a series; bad options exit 2", "[capsule3d]") {
+TEST_CASE("capsule reference-bim writes a summary row and a series - bad options exit 2", "[capsule3d]") {
   const fs::path dir = scratch();
   const fs::path series = dir / "series.csv";
   const Result r = run_capsule("reference-bim --ca 0.1 --level 1 --kt 0.2 --every 0.1 -o " + quote(series.string()));
@@ -127,7 +127,7 @@ TEST_CASE("capsule reference-bim writes a summary row and a series; bad options 
   fs::remove_all(dir);
 }
 
-TEST_CASE("capsule rigid-sphere writes a summary row and a series; bad options exit 2", "[capsule3d]") {
+TEST_CASE("capsule rigid-sphere writes a summary row and a series - bad options exit 2", "[capsule3d]") {
   const fs::path dir = scratch();
   const fs::path series = dir / "series.csv";
   const Result r = run_capsule("rigid-sphere --a 2 --level 1 --domain 5 5 5 --kt 0.1 --every 0.05 -o " + quote(series.string()));
@@ -148,7 +148,7 @@ TEST_CASE("capsule rigid-sphere writes a summary row and a series; bad options e
   fs::remove_all(dir);
 }
 
-TEST_CASE("capsule rigid-circle writes a summary row and a series; bad options exit 2", "[capsule2d]") {
+TEST_CASE("capsule rigid-circle writes a summary row and a series - bad options exit 2", "[capsule2d]") {
   const fs::path dir = scratch();
   const fs::path series = dir / "series.csv";
   const Result r = run_capsule("rigid-circle --a 3 --segments 32 --domain 5 5 --kt 0.1 --every 0.05 -o " + quote(series.string()));

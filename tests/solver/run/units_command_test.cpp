@@ -28,7 +28,7 @@ fs::path scratch() {
 
 }  // namespace
 
-TEST_CASE("capsule units prints a physical cell's groups and lattice; its member file records both ways", "[capsule3d]") {
+TEST_CASE("capsule units prints a physical cell's groups and lattice - its member file records both ways", "[capsule3d]") {
   const std::string rbc = quote(std::string(CAPSULE_SOURCE_DIR) + "/tests/data/scenes/rbc_physical_3d.json");
   const Result units = run_capsule("units " + rbc);
   INFO(units.output);

@@ -72,7 +72,7 @@ TEST_CASE("a bending modulus in k_B T needs the temperature", "[scene][physical]
   CHECK(refusal(j).find("physical.bending_modulus_kT: the bending modulus is given twice") != std::string::npos);
 }
 
-TEST_CASE("the canonical physical scene reads back to itself; a scene without one has no physical key", "[scene][physical]") {
+TEST_CASE("the canonical physical scene reads back to itself - a scene without one has no physical key", "[scene][physical]") {
   const json canonical = Scene::from_json(rbc(), "cell.json").to_json();
   REQUIRE(canonical.contains("physical"));
   CHECK(canonical["physical"]["radius_um"] == 2.82);

@@ -114,7 +114,7 @@ TEST_CASE("a Scene built in code has the parser's defaults of a 2D scene of toda
   }
 }
 
-TEST_CASE("resolution.precision: 2D double by default (version 5 wrote only single); 3D single by default, always written", "[scene]") {
+TEST_CASE("resolution.precision: 2D double by default (version 5 wrote only single) - 3D single by default, always written", "[scene]") {
   json j3 = minimal_2d();
   j3["dim"] = 3;
   j3["shape"] = "sphere";
@@ -147,7 +147,7 @@ TEST_CASE("resolution.precision: 2D double by default (version 5 wrote only sing
   CHECK_THROWS_AS(Scene::from_json(j, "t.json"), SceneError);
 }
 
-TEST_CASE("resolution.membrane_update: euler by default (left out of version 5's canonical text); 3D only", "[scene]") {
+TEST_CASE("resolution.membrane_update: euler by default (left out of version 5's canonical text) - 3D only", "[scene]") {
   json j3 = minimal_2d();
   j3["dim"] = 3;
   j3["shape"] = "sphere";
@@ -175,7 +175,7 @@ TEST_CASE("resolution.membrane_update: euler by default (left out of version 5's
                     Catch::Contains("resolution.membrane_update: membrane update \"adams_bashforth2\" is 3D only"));
 }
 
-TEST_CASE("resolution.marker_inset: the stresslet's rule by default in 3D (0 in version 5 and in 2D); a number; at most a/4", "[scene]") {
+TEST_CASE("resolution.marker_inset: the stresslet's rule by default in 3D (0 in version 5 and in 2D) - a number - at most a/4", "[scene]") {
   json j3 = minimal_2d();
   j3["dim"] = 3;
   j3["shape"] = "sphere";
@@ -222,7 +222,7 @@ TEST_CASE("resolution.marker_inset: the stresslet's rule by default in 3D (0 in 
   CHECK(Scene::from_json(j2, "t.json").resolution.marker_inset == 0.5);  // a scene choice in 2D
 }
 
-TEST_CASE("resolution.kelvin_voigt_step: exact_mobility by default (version 5: approximate_mobility, left out of its canonical text); 2D only",
+TEST_CASE("resolution.kelvin_voigt_step: exact_mobility by default (version 5: approximate_mobility, left out of its canonical text) - 2D only",
           "[scene]") {
   json j = minimal_2d();
   j["eta"] = 200;
@@ -261,7 +261,7 @@ TEST_CASE("resolution.kelvin_voigt_step: exact_mobility by default (version 5: a
                     Catch::Contains("resolution.kelvin_voigt_step: Kelvin-Voigt step \"exact_mobility\" is the 2D membrane's"));
 }
 
-TEST_CASE("power_law.model: membrane by default (version 5: fluid_shell, left out of its canonical text); membrane replaces eta", "[scene]") {
+TEST_CASE("power_law.model: membrane by default (version 5: fluid_shell, left out of its canonical text) - membrane replaces eta", "[scene]") {
   json j = minimal_2d();
   j["dim"] = 3;
   j["shape"] = "sphere";
@@ -294,7 +294,7 @@ TEST_CASE("power_law.model: membrane by default (version 5: fluid_shell, left ou
   CHECK_THROWS_WITH(Scene::from_json(j, "t.json"), Catch::Contains("power_law.model: unknown value \"shell\""));
 }
 
-TEST_CASE("resolution.collision: trt by default in 3D (version 5: mrt, left out of its canonical text); trt 3D only", "[scene]") {
+TEST_CASE("resolution.collision: trt by default in 3D (version 5: mrt, left out of its canonical text) - trt 3D only", "[scene]") {
   json j3 = minimal_2d();
   j3["dim"] = 3;
   j3["shape"] = "sphere";

@@ -148,7 +148,7 @@ TEST_CASE("slugs are readable and safe as a path component", "[study]") {
   CHECK(member_slug(std::string(200, 'x'), {}).size() == 80);
 }
 
-TEST_CASE("one scene twice in a case is refused; shared by cases it is one member", "[study]") {
+TEST_CASE("one scene twice in a case is refused - shared by cases it is one member", "[study]") {
   json doc = testing::tiny_campaign("dup", {0.1, 1e-1}, 1, 1);
   CHECK_THROWS_WITH(expand_text(doc), Catch::Contains("same scene"));
 
@@ -165,7 +165,7 @@ TEST_CASE("one scene twice in a case is refused; shared by cases it is one membe
   CHECK(members[2].scene["E_b"].get<double>() == 0.01);
 }
 
-TEST_CASE("output-only keys leave the member id alone; the output interval does not", "[study]") {
+TEST_CASE("output-only keys leave the member id alone - the output interval does not", "[study]") {
   const json doc = testing::tiny_campaign("out", {0.1}, 1, 1);
   const Member plain = expand_text(doc).at(0);
   json shapes = doc;

@@ -47,7 +47,7 @@ TEST_CASE("a scene given to study is named as a scene, not taken apart as a camp
   CHECK(r.output.find("unknown key") == std::string::npos);
 }
 
-TEST_CASE("study --version names the code and physics version; --help shows examples", "[study]") {
+TEST_CASE("study --version names the code and physics version - --help shows examples", "[study]") {
   const auto version = testing::run_study({"--version"}, CAPSULE_SOURCE_DIR);
   INFO(version.output);
   CHECK(version.exit_code == 0);

@@ -136,7 +136,7 @@ TEST_CASE("a member folder that cannot be looked into is unreadable, not new", "
   fs::remove_all(dir);
 }
 
-TEST_CASE("a corrupt member file is refused by reuse and by report; the previous report stays", "[study][integrity]") {
+TEST_CASE("a corrupt member file is refused by reuse and by report - the previous report stays", "[study][integrity]") {
   const fs::path dir = testing::scratch_dir("corrupt_member");
   testing::write_text(dir / "first.json", testing::tiny_campaign("first", {0.02, 0.03}, 0.3, 0).dump());
   testing::write_text(dir / "second.json", testing::tiny_campaign("second", {0.02}, 0.3, 0).dump());

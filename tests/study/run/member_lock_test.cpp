@@ -85,7 +85,7 @@ TEST_CASE("a member already running is left alone, a complete one is never rerun
   fs::remove_all(dir);
 }
 
-TEST_CASE("a stale member lock is taken over; another host's lock holds while it is touched", "[study][lock]") {
+TEST_CASE("a stale member lock is taken over - another host's lock holds while it is touched", "[study][lock]") {
   const fs::path dir = testing::scratch_dir("stale_lock");
   const fs::path lock_file = member_lock_file(dir);
   SECTION("this host, a pid that is not alive") {
@@ -118,7 +118,7 @@ TEST_CASE("a stale member lock is taken over; another host's lock holds while it
   fs::remove_all(dir);
 }
 
-TEST_CASE("SIGTERM to a running member writes a restart point; the next run continues it", "[study][lock]") {
+TEST_CASE("SIGTERM to a running member writes a restart point - the next run continues it", "[study][lock]") {
   const fs::path dir = testing::scratch_dir("member_sigterm");
   testing::write_text(dir / "c.json", testing::tiny_campaign("sigterm", {0.02}, 30, 0).dump());
   CampaignSurvey s = survey_campaign((dir / "c.json").string(), dir / "results", slurm_queue);

@@ -11,7 +11,7 @@
 using namespace capsule::study;
 namespace fs = std::filesystem;
 
-TEST_CASE("study run --case runs only that case's members; an unknown case is refused", "[study]") {
+TEST_CASE("study run --case runs only that case's members - an unknown case is refused", "[study]") {
   const fs::path dir = testing::scratch_dir("run_case");
   nlohmann::json doc = testing::tiny_campaign("cases", {0.01, 0.02}, 0.5, 0);
   doc["cases"] = nlohmann::json::array({{{"name", "flat"}, {"set", {{"E_b", 0.0}}}},
@@ -36,7 +36,7 @@ TEST_CASE("study run --case runs only that case's members; an unknown case is re
   fs::remove_all(dir);
 }
 
-TEST_CASE("study run --where runs only the members with that scene value; a value no member has is refused",
+TEST_CASE("study run --where runs only the members with that scene value - a value no member has is refused",
           "[study]") {
   // The use: run the cheap level of a resolution ladder first, the rest later.
   const fs::path dir = testing::scratch_dir("run_where");

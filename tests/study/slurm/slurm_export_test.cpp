@@ -74,7 +74,7 @@ TEST_CASE("the #SBATCH --output line is quoted, with % doubled, one file per sub
   CHECK_THROWS_AS(sbatch_output_line("/shared/a\"b/slurm"), UnsafePathError);
 }
 
-TEST_CASE("Slurm resources: CPUs from --threads or the dimension, not this machine; --time and --mem", "[study]") {
+TEST_CASE("Slurm resources: CPUs from --threads or the dimension, not this machine - --time and --mem", "[study]") {
   const fs::path dir = testing::scratch_dir("slurm_resources");
   nlohmann::json doc = testing::tiny_campaign("slurm3d", {0.05}, 1, 1);
   doc["base"]["dim"] = 3;

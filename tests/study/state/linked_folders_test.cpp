@@ -35,7 +35,7 @@ TEST_CASE("a member folder linked to its sibling is unreadable: the sibling's co
   fs::remove_all(dir);
 }
 
-TEST_CASE("a members folder that is a link to another disk is refused, naming the link; nothing is written there",
+TEST_CASE("a members folder that is a link to another disk is refused, naming the link - nothing is written there",
           "[study][integrity]") {
   const fs::path dir = testing::scratch_dir("linked_members");
   testing::write_text(dir / "c.json", testing::tiny_campaign("elsewhere", {0.02}, 0.3, 0).dump());

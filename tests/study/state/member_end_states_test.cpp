@@ -15,7 +15,7 @@
 using namespace capsule::study;
 namespace fs = std::filesystem;
 
-TEST_CASE("a member killed by a signal is interrupted, not failed; a crash is a failure", "[study]") {
+TEST_CASE("a member killed by a signal is interrupted, not failed - a crash is a failure", "[study]") {
   const fs::path dir = testing::scratch_dir("killed_member");
   const MemberPaths p = member_paths_in(dir);
   testing::write_text(p.exit_status, "137\n");

@@ -90,7 +90,7 @@ TEST_CASE("a member file whose content hash was removed and data edited is refus
   fs::remove_all(dir);
 }
 
-TEST_CASE("status, plan and run verify a member file before calling it complete; the verification is remembered",
+TEST_CASE("status, plan and run verify a member file before calling it complete - the verification is remembered",
           "[study][integrity]") {
   const fs::path dir = testing::scratch_dir("verified_complete");
   testing::write_text(dir / "c.json", testing::tiny_campaign("verified", {0.02}, 0.3, 0).dump());
