@@ -25,18 +25,10 @@
 #include "solver/run/simulation3d.hpp"
 #include "solver/scene/scene.hpp"
 #include "solver/scene/version.hpp"
+#include "solver/common/short_text.hpp"
 
 namespace capsule {
 namespace {
-
-std::string utc_now() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
 
 std::string host_name() {
   char buf[256] = {};

@@ -24,6 +24,7 @@
 #include "solver/run/simulation2d.hpp"
 #include "solver/run/simulation3d.hpp"
 #include "solver/scene/memory_estimate.hpp"
+#include "solver/common/short_text.hpp"
 
 namespace capsule {
 namespace {
@@ -40,15 +41,6 @@ std::string number(double x) {
   s.precision(10);
   s << x;
   return s.str();
-}
-
-std::string utc_now() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
 }
 
 // The member as it ran: its file, its rows and its scene.

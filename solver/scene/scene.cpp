@@ -13,17 +13,12 @@
 #include "solver/scene/run_bounds.hpp"
 #include "solver/scene/stretch_scene.hpp"
 #include "solver/scene/user_hints.hpp"
+#include "solver/common/short_text.hpp"
 
 namespace capsule {
 namespace {
 
 using nlohmann::json;
-
-std::string fmt(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 
 // -0.0 read as 0.0: the canonical text (and so the member id) of a scene must not depend on
 // the sign of a zero, which changes nothing the solver computes.
@@ -57,7 +52,7 @@ class ObjectReader {
   // A number in [lo, hi]; lo_open / hi_open make that end exclusive.
   double number(const std::string& key, std::optional<double> fallback, double lo, double hi,
                 bool lo_open = false, bool hi_open = false) {
-    std::string range = std::string(lo_open ? "(" : "[") + fmt(lo) + ", " + fmt(hi) + (hi_open ? ")" : "]");
+    std::string range = std::string(lo_open ? "(" : "[") + number_text(lo) + ", " + number_text(hi) + (hi_open ? ")" : "]");
     if (!has(key)) {
       if (!fallback) fail(key, "missing required key", range);
       return *fallback;
@@ -66,7 +61,7 @@ class ObjectReader {
     if (!v.is_number()) fail(key, "expected a number, got " + message_value(v), range);
     double x = v.get<double>();
     if (!std::isfinite(x) || (lo_open ? x <= lo : x < lo) || (hi_open ? x >= hi : x > hi))
-      fail(key, "value " + fmt(x) + " out of range", range);
+      fail(key, "value " + number_text(x) + " out of range", range);
     return unsigned_zero(x);
   }
 
@@ -77,7 +72,7 @@ class ObjectReader {
     if (!v.is_number() || std::floor(v.get<double>()) != v.get<double>())
       fail(key, "expected an integer, got " + message_value(v), range);
     double x = v.get<double>();
-    if (x < lo || x > hi) fail(key, "value " + fmt(x) + " out of range", range);
+    if (x < lo || x > hi) fail(key, "value " + number_text(x) + " out of range", range);
     return static_cast<int>(x);
   }
 
@@ -102,7 +97,7 @@ class ObjectReader {
   std::vector<double> numbers(const std::string& key, std::vector<double> fallback, double lo,
                               double hi, std::size_t min_n, std::size_t max_n) {
     std::string range = std::to_string(min_n) + ".." + std::to_string(max_n) + " numbers in [" +
-                        fmt(lo) + ", " + fmt(hi) + "]";
+                        number_text(lo) + ", " + number_text(hi) + "]";
     if (!has(key)) return fallback;
     const json& v = j_.at(key);
     if (!v.is_array()) fail(key, "expected an array, got " + message_value(v), range);
@@ -113,7 +108,7 @@ class ObjectReader {
     for (const auto& e : v) {
       if (!e.is_number()) fail(key, "expected numbers, got " + message_value(e), range);
       double x = e.get<double>();
-      if (!std::isfinite(x) || x < lo || x > hi) fail(key, "value " + fmt(x) + " out of range", range);
+      if (!std::isfinite(x) || x < lo || x > hi) fail(key, "value " + number_text(x) + " out of range", range);
       out.push_back(unsigned_zero(x));
     }
     return out;
@@ -293,12 +288,12 @@ void read_physical(ObjectReader& r, Scene& s) {
   p.refuse_unknown();
   const PhysicalGroups g = physical_groups(c, s.law, s.conventions.sls_viscosity);
   const auto take = [&](const std::string& key, double& field, double derived, double lo, double hi, bool lo_open) {
-    const std::string range = std::string(lo_open ? "(" : "[") + fmt(lo) + ", " + fmt(hi) + "]";
+    const std::string range = std::string(lo_open ? "(" : "[") + number_text(lo) + ", " + number_text(hi) + "]";
     if (!std::isfinite(derived) || (lo_open ? derived <= lo : derived < lo) || derived > hi)
-      p.fail("", "the cell gives " + key + " = " + fmt(derived) + ", outside the solver's range",
+      p.fail("", "the cell gives " + key + " = " + number_text(derived) + ", outside the solver's range",
              key + " in " + range + ": change the moduli, viscosities, radius or shear rate");
     if (!std::isnan(field) && std::abs(field - derived) > 1e-12 * std::abs(derived))
-      r.fail(key, key + " = " + fmt(field) + " is not the physical block's " + fmt(derived),
+      r.fail(key, key + " = " + number_text(field) + " is not the physical block's " + number_text(derived),
              "leave " + key + " out with a physical block, or give the value it gives");
     field = derived;
   };
@@ -307,7 +302,7 @@ void read_physical(ObjectReader& r, Scene& s) {
   take("V", s.V, g.V, 0.0, 100.0, true);
   take("eta", s.eta, g.eta, 0.0, 1e3, false);
   if (g.Re > 10.0)
-    p.fail("shear_rate_per_s", "the cell's own Reynolds number rho k a^2 / mu_a = " + fmt(g.Re) +
+    p.fail("shear_rate_per_s", "the cell's own Reynolds number rho k a^2 / mu_a = " + number_text(g.Re) +
                                    " is above the solver's range",
            "rho k a^2 / mu_a <= 10");
   s.Re = lattice_Re(g, s.Re);

@@ -9,17 +9,12 @@
 #include "common/json_text.hpp"
 #include "solver/scene/physical_cell.hpp"
 #include "solver/scene/user_hints.hpp"
+#include "solver/common/short_text.hpp"
 
 namespace capsule {
 namespace {
 
 using nlohmann::json;
-
-std::string fmt(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 
 const std::vector<std::string> known_keys = {"force",     "force_pN", "patch_fraction", "contact_diameter",
                                              "contact_diameter_um", "until", "kt", "tolerance",
@@ -45,7 +40,7 @@ class StretchReader {
   // A number in [lo, hi] (open ends where asked); a missing key is `fallback`, or refused without one.
   double number(const std::string& key, std::optional<double> fallback, double lo, double hi, bool lo_open,
                 bool hi_open) const {
-    const std::string range = std::string(lo_open ? "(" : "[") + fmt(lo) + ", " + fmt(hi) + (hi_open ? ")" : "]");
+    const std::string range = std::string(lo_open ? "(" : "[") + number_text(lo) + ", " + number_text(hi) + (hi_open ? ")" : "]");
     if (!has(key)) {
       if (!fallback) fail(key, "missing required key", range);
       return *fallback;
@@ -54,7 +49,7 @@ class StretchReader {
     if (!v.is_number()) fail(key, "expected a number, got " + message_value(v), range);
     const double x = v.get<double>();
     if (!std::isfinite(x) || (lo_open ? x <= lo : x < lo) || (hi_open ? x >= hi : x > hi))
-      fail(key, "value " + fmt(x) + " out of range", range);
+      fail(key, "value " + number_text(x) + " out of range", range);
     return x == 0.0 ? 0.0 : x;
   }
   StopCondition until() const {

@@ -21,6 +21,7 @@
 #include "solver/run/simulation3d.hpp"
 #include "solver/scene/scene.hpp"
 #include "solver/scene/units.hpp"
+#include "tests/solver/run/run_scene3d.hpp"
 
 using namespace capsule;
 
@@ -61,16 +62,7 @@ io::MemberData run(const std::string& scene_json, const std::string& name) {
   // the 2-core CI machine, where OpenMP barriers on oversubscribed cores cost 5x (measured).
   omp_set_num_threads(1);
   const Scene scene = Scene::from_json(nlohmann::json::parse(scene_json), name);
-  const std::string path = (std::filesystem::temp_directory_path() / ("capsule3d_test_" + name + ".h5")).string();
-  std::string status;
-  {
-    io::MemberWriter out(path);
-    status = run_simulation3d(scene, out, true);
-    out.finish(status);
-  }
-  io::MemberData d = io::read_member(path);
-  std::filesystem::remove(path);
-  return d;
+  return testing::run_scene3d(scene, "capsule3d_test_" + name);
 }
 
 std::string sphere_scene(double Ca, double a, int level, double kt, double eta = 0, double interval = 0.05, double V = 1) {

@@ -7,6 +7,7 @@
 
 #include "solver/io/state_archive.hpp"
 #include "tests/solver/run/member_compare.hpp"
+#include "tests/solver/run/tiny_scenes.hpp"
 
 using namespace capsule;
 using namespace capsule::testing;
@@ -14,15 +15,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// a = 4, 32 segments: every piece of state a restart point carries -- viscosity contrast,
-// implicit membrane viscosity, bending, a condition-ended shear phase, shapes -- in ~0.3 s.
-nlohmann::json tiny_2d(double Ca = 0.05) {
-  return {{"dim", 2}, {"shape", "circle"}, {"Ca", Ca}, {"E_b", 0.05}, {"V", 2}, {"eta", 3},
-          {"resolution", {{"a", 4}, {"segments", 32}}},
-          {"protocol", {{"shear", {{"until", "steady"}, {"window_kt", 0.3}, {"tolerance", 0.01}, {"max_kt", 1.0}}},
-                        {"recover", {{"until", "time"}, {"kt", 0.4}}}}},
-          {"output", {{"interval_kt", 0.05}, {"shapes_at_kt", {0.3, 1.1}}}}};
-}
+// With shapes: every piece of state a restart point carries.
+nlohmann::json tiny_2d(double Ca = 0.05) { return tiny_2d_scene(Ca, {0.3, 1.1}); }
 
 }  // namespace
 

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include "tests/solver/run/member_compare.hpp"
+#include "tests/solver/run/tiny_scenes.hpp"
 
 using namespace capsule;
 using namespace capsule::testing;
@@ -11,14 +12,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// a = 4, level 2, a 20 x 20 x 16 box: 384 steps at the automatic tau = 1.5 (any V with the
-// trt rates), about a second on one core.
-nlohmann::json tiny_3d() {
-  return {{"dim", 3}, {"shape", "sphere"}, {"Ca", 0.1}, {"E_b", 0.05}, {"V", 1}, {"eta", 0},
-          {"resolution", {{"a", 4}, {"mesh_level", 2}, {"domain", {5, 5, 4}}}},
-          {"protocol", {{"shear", {{"until", "time"}, {"kt", 0.3}}}, {"recover", {{"until", "time"}, {"kt", 0.1}}}}},
-          {"output", {{"interval_kt", 0.05}, {"shapes_at_kt", {0.1, 0.35}}}}};
-}
+nlohmann::json tiny_3d() { return tiny_3d_scene({0.1, 0.35}); }
 
 }  // namespace
 

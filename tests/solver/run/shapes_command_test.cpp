@@ -11,6 +11,7 @@
 #include "capsule_process.hpp"
 #include "solver/scene/scene.hpp"
 #include "tests/solver/run/member_compare.hpp"
+#include "tests/solver/run/tiny_scenes.hpp"
 
 using namespace capsule;
 using namespace capsule::testing;
@@ -18,21 +19,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// a = 4, 32 segments, viscosity contrast and membrane viscosity, a shear phase ended by a
-// condition: every part of the state a rerun must reproduce, in ~0.3 s (3D: 384 steps, ~1 s).
-nlohmann::json tiny_2d(double Ca = 0.05) {
-  return {{"dim", 2}, {"shape", "circle"}, {"Ca", Ca}, {"E_b", 0.05}, {"V", 2}, {"eta", 3},
-          {"resolution", {{"a", 4}, {"segments", 32}}},
-          {"protocol", {{"shear", {{"until", "steady"}, {"window_kt", 0.3}, {"tolerance", 0.01}, {"max_kt", 1.0}}},
-                        {"recover", {{"until", "time"}, {"kt", 0.4}}}}},
-          {"output", {{"interval_kt", 0.05}}}};
-}
-nlohmann::json tiny_3d() {
-  return {{"dim", 3}, {"shape", "sphere"}, {"Ca", 0.1}, {"E_b", 0.05}, {"V", 1}, {"eta", 0},
-          {"resolution", {{"a", 4}, {"mesh_level", 2}, {"domain", {5, 5, 4}}}},
-          {"protocol", {{"shear", {{"until", "time"}, {"kt", 0.3}}}, {"recover", {{"until", "time"}, {"kt", 0.1}}}}},
-          {"output", {{"interval_kt", 0.05}}}};
-}
+nlohmann::json tiny_2d(double Ca = 0.05) { return tiny_2d_scene(Ca, {}); }
+nlohmann::json tiny_3d() { return tiny_3d_scene({}); }
 
 std::string bytes_of(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);

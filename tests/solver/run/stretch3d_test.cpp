@@ -26,6 +26,7 @@
 #include "solver/io/member_file.hpp"
 #include "solver/run/simulation3d.hpp"
 #include "solver/scene/scene.hpp"
+#include "tests/solver/run/run_scene3d.hpp"
 
 using namespace capsule;
 
@@ -40,15 +41,7 @@ io::MemberData run(double force, int level, double recover_kt, const std::string
                         "recover": {"until": "time", "kt": )" << recover_kt << R"(}},
            "output": {"interval_kt": 0.1}})";
   const Scene scene = Scene::from_json(nlohmann::json::parse(j.str()), name);
-  const std::string path = (std::filesystem::temp_directory_path() / ("stretch3d_test_" + name + ".h5")).string();
-  std::string status;
-  {
-    io::MemberWriter out(path);
-    status = run_simulation3d(scene, out, true);
-    out.finish(status);
-  }
-  io::MemberData d = io::read_member(path);
-  std::filesystem::remove(path);
+  io::MemberData d = testing::run_scene3d(scene, "stretch3d_test_" + name);
   REQUIRE(d.status == "complete");
   return d;
 }
