@@ -3,15 +3,31 @@
 #
 #   capsule_floor_plan(room...)
 #     Every room of the house, from the bottom floor up. A room may depend only on rooms below it.
-#   capsule_room(room [TARGET target] [FOLDERS dir...] [DEPENDS room...] [LIBS lib...])
+#   capsule_room(room [TARGET target] [FOLDERS dir...] [DEPENDS room...] [LIBS lib...]
+#                [PRECOMPILE header...])
 #     The library `target` (default capsule_<room> with / as _) made of every .cpp in the
 #     folders (default: the folder named like the room), linking the targets of the rooms it
-#     DEPENDS on and the outside libraries LIBS. Refused when a dependency is not in the floor
+#     DEPENDS on and the outside libraries LIBS. PRECOMPILE: outside headers most of the room's
+#     sources include (<nlohmann/json.hpp>, <Eigen/Dense>, <CLI/CLI.hpp>), parsed once into a
+#     precompiled header instead of once per source (capsule_precompile).
+#     Refused when a dependency is not in the floor
 #     plan, is above the room ("room X may not depend on Y: Y is above X"), or is not defined
 #     yet. At the end of the configure step every room's .cpp and .hpp files are read: an
 #     `#include "dir/file.hpp"` of a header of another room that is not among the room's
 #     dependencies (direct or through others) is refused, naming the file, the line and both rooms.
 include_guard(GLOBAL)
+
+# capsule_precompile(target header...): the headers as the target's precompiled header, unless
+# CAPSULE_PRECOMPILED_HEADERS is off. Only outside libraries' headers, which the target's sources
+# include anyway (a header of the house would hide a missing include). The build of the tools
+# on two cores: docs/findings/performance.md "Building the tools".
+function(capsule_precompile target)
+  set(headers ${ARGN})
+  if(CAPSULE_PRECOMPILED_HEADERS AND headers)
+    list(TRANSFORM headers REPLACE "^([^<].*)$" "<\\1>")
+    target_precompile_headers(${target} PRIVATE ${headers})
+  endif()
+endfunction()
 
 function(capsule_floor_plan)
   set_property(GLOBAL PROPERTY CAPSULE_FLOOR_PLAN ${ARGN})
@@ -23,7 +39,7 @@ function(_capsule_room_key room out)
 endfunction()
 
 function(capsule_room room)
-  cmake_parse_arguments(PARSE_ARGV 1 arg "" "TARGET" "FOLDERS;DEPENDS;LIBS")
+  cmake_parse_arguments(PARSE_ARGV 1 arg "" "TARGET" "FOLDERS;DEPENDS;LIBS;PRECOMPILE")
   get_property(plan GLOBAL PROPERTY CAPSULE_FLOOR_PLAN)
   get_property(defined GLOBAL PROPERTY CAPSULE_ROOMS_DEFINED)
   list(FIND plan "${room}" floor)
@@ -82,6 +98,7 @@ function(capsule_room room)
     endif()
     target_include_directories(${arg_TARGET} PUBLIC ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/generated)
     target_link_libraries(${arg_TARGET} PUBLIC ${dependency_targets} ${arg_LIBS})
+    capsule_precompile(${arg_TARGET} ${arg_PRECOMPILE})
   else()  # header-only while it has no .cpp
     add_library(${arg_TARGET} INTERFACE)
     target_include_directories(${arg_TARGET} INTERFACE ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/generated)
