@@ -10,6 +10,7 @@ namespace capsule {
 struct StretchLoad {
   double force = 0;     // F / (E_s a), E_s the modulus of Ca (34)
   double force_pN = 0;  // F in pN, when the scene gave it so (with a physical block); else 0
+  bool force_in_pN = false;  // the scene gave force_pN (0 pN included), which its canonical form keeps
   // The patch: a fraction of the vertices at each end (Fedosov et al. 2010: 0.02), or the
   // bead's contact diameter (in units of a, or in um with a physical block); one is 0.
   double patch_fraction = 0;

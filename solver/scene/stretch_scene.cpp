@@ -109,6 +109,7 @@ StretchLoad read_stretch(const json& j, const std::string& source, const Scene& 
   StretchLoad load;
   if (r.has("force_pN")) {
     load.force_pN = r.number("force_pN", std::nullopt, 0.0, 1e5, false, false);
+    load.force_in_pN = true;
     load.force = dimensionless_force(scene, load.force_pN);
   } else {
     load.force = r.number("force", std::nullopt, 0.0, 1e3, false, false);
@@ -130,7 +131,7 @@ json stretch_json(const StretchLoad& load, const PhaseSpec& phase) {
   json j = {{"until", choice_name(phase.until)}, {"kt", phase.kt}, {"tolerance", phase.tolerance},
             {"window_kt", phase.window_kt}, {"max_kt", phase.max_kt}};
   // The force and the patch as the scene gave them (the other form follows from them).
-  if (load.force_pN > 0) j["force_pN"] = load.force_pN;
+  if (load.force_in_pN) j["force_pN"] = load.force_pN;
   else j["force"] = load.force;
   if (load.contact_diameter_um > 0) j["contact_diameter_um"] = load.contact_diameter_um;
   else if (load.contact_diameter > 0) j["contact_diameter"] = load.contact_diameter;

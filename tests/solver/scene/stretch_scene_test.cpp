@@ -72,6 +72,19 @@ TEST_CASE("a physical cell's force in pN is F / (E_s a) computed by hand, both k
   CHECK(Scene::from_json(canonical, "again").to_json() == canonical);
 }
 
+TEST_CASE("a force of 0 pN stays in pN in the canonical scene, as a campaign sweeping force_pN finds it",
+          "[scene][stretch][physical]") {
+  json j = json::parse(R"({"dim": 3, "shape": "biconcave", "law": "skalak", "C": 100,
+    "physical": {"radius_um": 2.82, "shear_modulus_uN_per_m": 5.5, "bending_modulus_J": 2e-19,
+                 "plasma_viscosity_mPa_s": 1.0, "shear_rate_per_s": 100},
+    "protocol": {"stretch": {"force_pN": 0, "contact_diameter_um": 2.0, "until": "steady"},
+                 "recover": {"until": "time", "kt": 0}}})");
+  const json canonical = Scene::from_json(j, "cell.json").to_json();
+  CHECK(canonical["protocol"]["stretch"]["force_pN"] == 0.0);
+  CHECK(!canonical["protocol"]["stretch"].contains("force"));
+  CHECK(Scene::from_json(canonical, "again").to_json() == canonical);
+}
+
 TEST_CASE("bad stretch protocols are refused naming the key and the allowed range", "[scene][stretch]") {
   const json ok = {{"force", 0.1}, {"until", "steady"}};
   auto with = [&](const std::string& key, const json& value) {
