@@ -92,8 +92,9 @@ void ProgressReporter::report(long step, double kt, const Protocol& protocol, do
   const double mlups = rate_ * nodes_ / 1e6;
   if (print_) {
     char line[256];
-    std::snprintf(line, sizeof line, "capsule: %-7s kt %.3f / %s%.3f  D_xy %.4f  %.0f steps/s  %.1f MLUPS  ETA %s%s (end of %s)\n",
-                  o.phase.c_str(), kt, o.phase_end_is_cap ? "<=" : "", o.phase_end_kt, D_, rate_, mlups,
+    std::snprintf(line, sizeof line, "capsule: %-7s kt %.3f / %s%.3f  %s %.4f  %.0f steps/s  %.1f MLUPS  ETA %s%s (end of %s)\n",
+                  o.phase.c_str(), kt, o.phase_end_is_cap ? "<=" : "", o.phase_end_kt, protocol.watched().c_str(), D_,
+                  rate_, mlups,
                   o.phase_end_is_cap ? "<=" : "", format_duration(eta_phase).c_str(), o.phase.c_str());
     std::cerr << line << std::flush;
   }
@@ -110,7 +111,8 @@ void ProgressReporter::write_file(long step, double kt, const Protocol& protocol
                       {"phase", o.phase},
                       {"kt", kt},
                       {"steps", step},
-                      {"D_xy", std::isfinite(D_) ? nlohmann::json(D_) : nlohmann::json()},
+                      {"D_xy", std::isfinite(D_) ? nlohmann::json(D_) : nlohmann::json()},  // the watched series' value
+                      {"watched", protocol.watched()},  // its name: D_xy, or D_axial in a stretch
                       {"steps_per_second", rate_},
                       {"mlups", mlups},
                       {"phase_end_kt", o.phase_end_kt},

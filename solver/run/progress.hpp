@@ -2,6 +2,7 @@
 // Progress of a running member (docs/guide/running.md "Progress"): every `interval` seconds of wall time a
 // line on stderr (unless quiet)
 //   capsule: shear  kt 1.250 / 3.000  D_xy 0.1834  412 steps/s  7.9 MLUPS  ETA 5m12s (end of shear)
+// (D_axial in a stretch: the series the protocol watches)
 // and the same facts as JSON in <member>.progress (written atomically), which `study` reads to
 // show running members: pid, host, phase, kt, D_xy, steps per second, ETA to the end of the
 // phase and of the member ("<=" when a phase ends on a condition: the ETA is then to its cap).
