@@ -33,6 +33,11 @@ std::string stopping_rule(const nlohmann::json& scene, const char* phase) {
   return x.value("until", std::string()) + " " + number("window_kt") + " " + number("tolerance");
 }
 
+// The first phase: the optical-tweezers stretch where the scene has one, else the shear.
+const char* first_phase(const nlohmann::json& scene) {
+  return scene.contains(nlohmann::json::json_pointer("/protocol/stretch")) ? "stretch" : "shear";
+}
+
 }  // namespace
 
 // What sets a capsule's relaxation, read once per member: the logarithms of Ca and V, eta,
@@ -57,7 +62,8 @@ PhaseLengths::Physics PhaseLengths::physics_of(const nlohmann::json& s) {
   f.law = text_at(s, P("/law"));
   f.reference_case = text_at(s, P("/reference_case"));
   f.sls_reading = text_at(s, P("/conventions/sls_viscosity"));
-  f.rule[0] = stopping_rule(s, "shear");
+  // A stretch's loading and a shear are different phases: never each other's neighbours.
+  f.rule[0] = std::string(first_phase(s)) + " " + stopping_rule(s, first_phase(s));
   f.rule[1] = stopping_rule(s, "recover");
   return f;
 }
@@ -150,7 +156,7 @@ void PhaseLengths::merge(const PhaseLengths& other) {
 }
 
 std::optional<double> PhaseLengths::expected_kt(const nlohmann::json& scene, bool recovery) const {
-  const char* phase = recovery ? "recover" : "shear";
+  const char* phase = recovery ? "recover" : first_phase(scene);
   const nlohmann::json::json_pointer p(std::string("/protocol/") + phase);
   if (!scene.contains(p)) return std::nullopt;
   const auto until = choice_from_name<StopCondition>(scene.at(p).value("until", ""));

@@ -32,7 +32,7 @@ class PhaseLengths {
   // members it does not hold.
   static PhaseLengths known(const std::filesystem::path& results_dir);
 
-  // The expected length (kt) of the scene's shear (recovery = false) or recovery phase when it
+  // The expected length (kt) of the scene's first phase (recovery = false: the shear, or a stretch's loading) or recovery phase when it
   // ends on a condition and finished members with the same rule (until, window, tolerance)
   // exist: the weighted geometric mean of its three nearest neighbours' lengths, never past
   // its own cap. Empty otherwise.

@@ -100,7 +100,8 @@ TEST_CASE("phase lengths predict the shipped members' phase ends several times b
       const char* phase = recovery ? "recover" : "shear";
       for (const auto& f : all) {
         if (f.scene.value("dim", 0) != dim) continue;
-        const auto& p = f.scene.at("protocol").at(phase);
+        const bool stretch = f.scene.at("protocol").contains("stretch");  // the loading phase instead of the shear
+        const auto& p = f.scene.at("protocol").at(stretch && !recovery ? "stretch" : phase);
         if (p.value("until", "") != "steady" && p.value("until", "") != "settled") continue;
         const auto kt = without[f.campaign].expected_kt(f.scene, recovery == 1);
         if (!kt) continue;
