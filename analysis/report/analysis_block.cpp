@@ -5,6 +5,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "analysis/report/experiment_data.hpp"
 #include "analysis/report/published_curves.hpp"
 
 namespace capsule::analysis {
@@ -231,6 +232,55 @@ std::vector<PublishedSpec> parse_published(const nlohmann::json& p, const std::s
   return out;
 }
 
+std::vector<ExperimentSpec> parse_experiments(const nlohmann::json& p, const std::string& where) {
+  const std::string path = "/experiments";
+  if (!p.is_array() || p.empty())
+    fail(where, path, "expected a non-empty array of {\"data\", \"x\", \"parameter\", \"compare\"[, \"group\"]}");
+  std::vector<ExperimentSpec> out;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const std::string at = path + "/" + std::to_string(i);
+    const auto& e = p[i];
+    if (!e.is_object()) fail(where, at, "expected an object with data, x, parameter, compare[, group]");
+    only_keys(e, {"data", "x", "parameter", "group", "compare"}, where, at);
+    for (const char* key : {"data", "x", "parameter", "compare"})
+      if (!e.contains(key)) fail(where, at + "/" + key, "required key missing");
+    ExperimentSpec spec;
+    spec.data = a_string(e["data"], where, at + "/data");
+    ExperimentData data;
+    try {
+      data = experiment_data(spec.data);
+    } catch (const std::invalid_argument& error) {
+      fail(where, at + "/data", error.what());
+    }
+    const auto column = [&](const nlohmann::json& v, const std::string& key_path) {
+      const std::string name = a_string(v, where, key_path);
+      try {
+        (void)data.column(name);
+      } catch (const std::invalid_argument& error) {
+        fail(where, key_path, error.what());
+      }
+      return name;
+    };
+    spec.x = column(e["x"], at + "/x");
+    spec.parameter = a_string(e["parameter"], where, at + "/parameter");
+    if (e.contains("group")) spec.group = a_string(e["group"], where, at + "/group");
+    const auto& c = e["compare"];
+    if (!c.is_array() || c.empty())
+      fail(where, at + "/compare", "expected a non-empty array of {\"measured\", \"spread\", \"series\"}");
+    for (std::size_t k = 0; k < c.size(); ++k) {
+      const std::string ck = at + "/compare/" + std::to_string(k);
+      if (!c[k].is_object()) fail(where, ck, "expected an object with measured, spread, series");
+      only_keys(c[k], {"measured", "spread", "series"}, where, ck);
+      for (const char* key : {"measured", "spread", "series"})
+        if (!c[k].contains(key)) fail(where, ck + "/" + key, "required key missing");
+      spec.compare.push_back({column(c[k]["measured"], ck + "/measured"), column(c[k]["spread"], ck + "/spread"),
+                              a_string(c[k]["series"], where, ck + "/series")});
+    }
+    out.push_back(spec);
+  }
+  return out;
+}
+
 // The fits of /fits: known, each once.
 std::vector<std::string> parse_fits(const nlohmann::json& j, const std::string& where) {
   std::vector<std::string> out = string_array(j, where, "/fits", false);
@@ -382,7 +432,8 @@ AnalysisBlock parse_analysis_block(const nlohmann::json& block, const std::strin
   if (block.is_null()) return out;
   if (!block.is_object()) fail(where, "", "expected an object");
   only_keys(block,
-            {"fits", "parameters", "tables", "bilinear", "ladder", "accuracy", "stability", "published", "figures"},
+            {"fits", "parameters", "tables", "bilinear", "ladder", "accuracy", "stability", "published", "experiments",
+             "figures"},
             where, "");
   if (block.contains("fits")) out.fits = parse_fits(block["fits"], where);
   if (block.contains("parameters")) out.parameters = parse_parameters(block["parameters"], where);
@@ -392,6 +443,7 @@ AnalysisBlock parse_analysis_block(const nlohmann::json& block, const std::strin
   if (block.contains("accuracy")) out.accuracy = parse_accuracy(block["accuracy"], out.fits, out.ladders, where);
   if (block.contains("stability")) out.stability = parse_stability(block["stability"], where);
   if (block.contains("published")) out.published = parse_published(block["published"], where);
+  if (block.contains("experiments")) out.experiments = parse_experiments(block["experiments"], where);
 
   if (block.contains("figures")) {
     if (!block["figures"].is_boolean()) fail(where, "/figures", "expected true or false");

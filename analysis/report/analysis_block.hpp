@@ -63,6 +63,23 @@ struct PublishedSpec {
   std::map<std::string, double> where;   // scene parameter (as tables[].x) -> the member's value
 };
 
+// One measured quantity of an experiment and the member series compared with it.
+struct ExperimentQuantity {
+  std::string measured;  // the data's column of means
+  std::string spread;    // the data's column of standard deviations
+  std::string series;    // the member series, read where the member's first phase ended (t_stop)
+};
+
+// An experiment's data (experiment_data.hpp) and the members that reproduce it: one member per
+// data point (and per value of `group`), its scene parameter `parameter` equal to the data's `x`.
+struct ExperimentSpec {
+  std::string data;       // embedded data name (experiment_data_names())
+  std::string x;          // the data's column of the controlled variable, e.g. "force_pN"
+  std::string parameter;  // the scene parameter holding it (dotted, as tables[].x)
+  std::string group;      // scene parameter telling apart members at one x (a resolution); "" none
+  std::vector<ExperimentQuantity> compare;
+};
+
 struct AnalysisBlock {
   std::vector<std::string> fits{"response", "recovery"};
   std::map<std::string, std::string> parameters;  // name -> JSON pointer into the canonical scene
@@ -72,6 +89,7 @@ struct AnalysisBlock {
   std::optional<AccuracySpec> accuracy;
   std::optional<StabilitySpec> stability;
   std::vector<PublishedSpec> published;
+  std::vector<ExperimentSpec> experiments;
   bool figures = true;
 };
 

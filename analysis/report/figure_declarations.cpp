@@ -182,6 +182,16 @@ void declare_figures(json& figure_data, const json& text_figures) {
     add({{"file", "published.png"}, {"kind", "published"}, {"x", "kt"}, {"left", {"D"}}, {"right", json::array()},
          {"panels", json::array()}, {"series", series}});
   }
+  for (const auto& e : figure_data.value("experiments", json::array())) {
+    json left = json::array(), series = json::array();
+    for (const auto& q : e["quantities"]) {
+      left.push_back(q["series"]);
+      series.push_back(q["measured"]);
+    }
+    add({{"file", "experiment_" + e["name"].get<std::string>() + ".png"}, {"kind", "experiment"},
+         {"source", e["name"]}, {"x", e["x"]}, {"left", left}, {"right", json::array()}, {"panels", json::array()},
+         {"series", series}});
+  }
   for (const auto& t : text_figures)
     if (t.contains("together"))
       if (json d = together_declaration(t, figure_data); !d["series"].empty()) add(std::move(d));

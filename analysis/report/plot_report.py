@@ -373,6 +373,58 @@ def draw_published(decl):
          "extents dotted, one colour per curve.")
 
 
+# Block "experiments": the experiment's means with their spread as error bars, a colour per
+# measured quantity, and the members' values joined by lines, a line style per group (resolution).
+def draw_experiment(decl):
+    e = next(x for x in data["experiments"] if x["name"] == decl["source"])
+    fig, ax = plt.subplots(figsize=(6.0, 3.8))
+    colors = {}
+    for k, q in enumerate(e["quantities"]):
+        colors[q["measured"]] = "C%d" % (k % 10)
+        ax.errorbar(q["x"], q["mean"], yerr=q["spread"], fmt="o", ms=4, capsize=3, color=colors[q["measured"]],
+                    label="measured: " + column_words(q["measured"]))
+    groups = []
+    for line in e["lines"]:
+        if line["group"] not in groups:
+            groups.append(line["group"])
+    styles = ["-", "--", ":", "-."]
+    for line in e["lines"]:
+        if line["x"]:
+            ax.plot(line["x"], line["y"], styles[groups.index(line["group"]) % len(styles)], marker="x", ms=4,
+                    lw=1.0, color=colors[line["measured"]],
+                    label="toolkit: " + column_words(line["measured"]) + ", " + typeset(line["group"]))
+    ax.set_xlabel(column_words(e["x"]))
+    unit = column_unit(e["quantities"][0]["measured"]) if e["quantities"] else ""
+    ax.set_ylabel("diameter" + (" (%s)" % unit if unit else "") if all("diameter" in q["measured"]
+                  for q in e["quantities"]) else "value")
+    ax.set_title(title_of(decl, "Members against the experiment: " + e["source"]), fontsize=9)
+    legend_outside(ax)
+    save(fig, decl["file"], "Circles with error bars: the experiment's means and standard deviations; crosses "
+         "joined by lines: the toolkit's members where their first phase ended, a line style per " +
+         ("group (%s)." % ", ".join(typeset(g) for g in groups)))
+
+
+UNITS = {"pN": "pN", "um": r"$\mu$m", "s": "s", "per_s": "1/s", "Hz": "Hz", "deg": "degrees"}
+
+
+def column_unit(name):
+    """The unit a data column's name ends with: "axial_diameter_um" -> "um" typeset."""
+    for suffix in sorted(UNITS, key=len, reverse=True):
+        if name.endswith("_" + suffix):
+            return UNITS[suffix]
+    return ""
+
+
+def column_words(name):
+    """A data column in words: "force_pN" -> "force (pN)", "axial_diameter_um" -> "axial diameter (um)"."""
+    unit = column_unit(name)
+    stem = name
+    for suffix in UNITS:
+        if UNITS[suffix] == unit and name.endswith("_" + suffix):
+            stem = name[: -len(suffix) - 1]
+    return stem.replace("_", " ") + (" (%s)" % unit if unit else "")
+
+
 # Members drawn together as one figure of the text draws them (e.g. Fig. 62, the power law solid
 # and its Kelvin-Voigt partners dotted; Fig. 63 their inclinations): a line style per group (the
 # levels of a resolution ladder are groups), a colour per member in it, where the shear stopped.
@@ -471,6 +523,6 @@ def parameter_text(key, value):
 
 DRAW = {"member": draw_member, "gamma": draw_gamma, "times": draw_times, "slices": draw_slices,
         "accuracy": draw_accuracy, "stability": draw_stability, "published": draw_published,
-        "together": draw_together}
+        "together": draw_together, "experiment": draw_experiment}
 for decl in data.get("figures", []):
     DRAW[decl["kind"]](decl)

@@ -59,6 +59,10 @@ ReportSummary write_report(const ReportRequest& request) {
   if (block.bilinear && !block.bilinear->ladder.empty()) wanted.insert(block.bilinear->ladder);
   for (const auto& p : block.published)
     for (const auto& [name, value] : p.where) wanted.insert(name);
+  for (const auto& e : block.experiments) {
+    wanted.insert(e.parameter);
+    if (!e.group.empty()) wanted.insert(e.group);
+  }
   for (const auto& l : block.ladders) wanted.insert(l.key);  // study thesis judges a ladder's finest level by it
   std::vector<MemberAnalysis> members = analyse_members(request, block, wanted);
   std::vector<std::string> unreadable;
@@ -84,6 +88,7 @@ ReportSummary write_report(const ReportRequest& request) {
   sections.push_back(accuracy_section());
   sections.push_back(stability_section());
   sections.push_back(published_section());
+  sections.push_back(experiment_section());
   for (const auto& section : sections) section->write(context, out, outputs);
   outputs.write_text(out / "fits.json", outputs.fits.dump(2) + "\n");
 

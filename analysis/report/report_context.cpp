@@ -43,6 +43,9 @@ MemberAnalysis analyse_member(const MemberRef& ref, const AnalysisBlock& block, 
       if (const auto lo = data->series.find("gamma_min"), hi = data->series.find("gamma_max");
           lo != data->series.end() && hi != data->series.end())
         m.gamma_min = lo->second, m.gamma_max = hi->second;
+      for (const auto& e : block.experiments)
+        for (const auto& q : e.compare)
+          if (const auto it = data->series.find(q.series); it != data->series.end()) m.series[q.series] = it->second;
       m.markers = data->markers;
       const auto& a = data->attributes;
       if (a.contains("wall_seconds") && a["wall_seconds"].is_number()) m.wall_seconds = a["wall_seconds"].get<double>();

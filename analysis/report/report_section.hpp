@@ -41,5 +41,6 @@ std::unique_ptr<ReportSection> ladder_section();               // ladder_section
 std::unique_ptr<ReportSection> accuracy_section();             // accuracy_section.cpp
 std::unique_ptr<ReportSection> stability_section();            // stability_section.cpp
 std::unique_ptr<ReportSection> published_section();            // published_section.cpp
+std::unique_ptr<ReportSection> experiment_section();           // experiment_section.cpp
 
 }  // namespace capsule::analysis
