@@ -6,8 +6,7 @@
 
 #include "solver/lbm/equilibrium.hpp"
 #include "solver/lbm/relaxation.hpp"
-#include "solver/lbm/in_place_stream_collide.hpp"
-#include "solver/lbm/shifted_stream_collide.hpp"
+#include "solver/lbm/stream_collide.hpp"
 
 namespace capsule::lbm {
 
@@ -100,25 +99,18 @@ void Fluid<L>::step_in() {
   if (has_viscosity_field()) update_marked_rates();
   const double* rates = has_viscosity_field() ? node_shear_rate_.data() : nullptr;
   const unsigned char* macro = macroscopic_rows_.empty() ? nullptr : macroscopic_rows_.data();
+  const bool trt = collision_ == CollisionModel::trt;
   if (streaming_ == Streaming::in_place) {
     InPlaceFields<T> a{nx_, ny_, nz_, n_, rows_, g.data(), force_.data(), velocity_.data(), density_.data(),
                        rates, macro, s_nu_, u_bottom_, u_top_};
-    const bool trt = collision_ == CollisionModel::trt;
-    if (rates && trt) in_place_stream_collide<L, T, T, true, true>(a, swapped_);
-    else if (rates) in_place_stream_collide<L, T, T, true>(a, swapped_);
-    else if (trt) in_place_stream_collide<L, T, T, false, true>(a, swapped_);
-    else in_place_stream_collide<L, T, T, false>(a, swapped_);
+    stream_collide_pass<L, T>(a, swapped_, rates != nullptr, trt);
     swapped_ = !swapped_;
     return;
   }
   Array<T>& g_next = next<T>();
   ShiftedFields<T> a{nx_, ny_, nz_, n_, rows_, g.data(), g_next.data(), force_.data(), velocity_.data(),
                      density_.data(), rates, macro, s_nu_, u_bottom_, u_top_};
-  const bool trt = collision_ == CollisionModel::trt;
-  if (rates && trt) shifted_stream_collide<L, T, T, true, true>(a);
-  else if (rates) shifted_stream_collide<L, T, T, true>(a);
-  else if (trt) shifted_stream_collide<L, T, T, false, true>(a);
-  else shifted_stream_collide<L, T, T, false>(a);
+  stream_collide_pass<L, T>(a, rates != nullptr, trt);
   g.swap(g_next);
 }
 
