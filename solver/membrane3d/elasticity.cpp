@@ -9,6 +9,22 @@
 
 namespace capsule::membrane3d {
 
+namespace {
+// The Maxwell element's law: the elastic law with E_s -> E_m, and Skalak's without its area term
+// (C = 0) unless the element keeps it (MaxwellElement::skalak_area_term, physics version 5): the
+// membrane viscosity is a shear viscosity, the area constant the elastic branch's. With C the
+// element's instantaneous area modulus is E_m (1 + 2 C), 50 x 201 times the shear modulus at
+// G = 50 and C = 100: a biconcave cell blew up within the first output interval, at rest and in
+// shear (docs/findings/experiments.md "Recovery after release").
+template <class Law>
+Law maxwell_law_of(Law law, const MaxwellElement& m) {
+  law.E_s = m.E_m;
+  if constexpr (requires { law.C; })
+    if (!m.skalak_area_term) law.C = 0.0;
+  return law;
+}
+}  // namespace
+
 ElasticMembrane::ElasticMembrane(const Mesh& ref, const Constitutive& law, const MaxwellElement& maxwell)
     : law_(law), maxwell_(maxwell) {
   const int nt = ref.triangle_count();
@@ -134,8 +150,7 @@ void ElasticMembrane::add_forces(const Mesh& cur, std::vector<Vec3>& force) {
   const double gain = maxwell_.tau_m / maxwell_.dt * (1.0 - decay);
   const bool started = memory_started_;
   visit_law(law_, [&](const auto& law) {
-    auto maxwell_law = law;  // the same law with E_s -> E_m
-    maxwell_law.E_s = maxwell_.E_m;
+    const auto maxwell_law = maxwell_law_of(law, maxwell_);
     accumulate(cur, force, [&](int t, const Mat2& C) {
       const Mat2 Sm = maxwell_law.second_piola_kirchhoff(C);
       // (67); on the first call the memory starts from the current state (no jump: Q = 0).
@@ -155,8 +170,7 @@ void ElasticMembrane::add_power_law_forces(const Mesh& cur, std::vector<Vec3>& f
   const bool started = memory_started_;
   gamma_.resize(cur.triangle_count());
   visit_law(law_, [&](const auto& law) {
-    auto maxwell_law = law;  // the same law with E_s -> E_m
-    maxwell_law.E_s = maxwell_.E_m;
+    const auto maxwell_law = maxwell_law_of(law, maxwell_);
     accumulate(cur, force, [&](int t, const Mat2& C) {
       const Mat2 Sm = maxwell_law.second_piola_kirchhoff(C);
       if (started) {

@@ -22,7 +22,8 @@ namespace capsule::membrane3d {
 // Standard linear solid (docs/conventions.md "Membrane viscosity in 3D"): a Maxwell element (modulus E_m = G E_s, relaxation time
 // tau_m = mu_s / E_m -- the text's "tau_m = E_m / mu_s" has the wrong dimension) in parallel
 // with the elastic law. Its tension is the relaxation-weighted history of the Maxwell
-// element's instantaneous elastic tension S_m(C) (the law with E_s -> E_m):
+// element's instantaneous elastic tension S_m(C) (the law with E_s -> E_m; Skalak's law without
+// its area term, C = 0: a shear viscosity, the area constant the elastic branch's alone):
 //   Q(t) = int_0^t exp(-(t - s)/tau_m) d S_m(C(s))/ds ds,
 // updated in O(1) per step by (67) with S_m varying linearly over a step:
 //   Q_{n+1} = exp(-dt/tau_m) Q_n + tau_m (S_m(n+1) - S_m(n))/dt (1 - exp(-dt/tau_m)).
@@ -48,6 +49,9 @@ struct MaxwellElement {
   double tau_m = 0;  // relaxation time (time steps); with a power law, the one at gamma = k
   double dt = 1;     // time step
   PowerLawRelaxation power_law = {};
+  // Skalak's area term (C) in the element too: physics version 5's (the law as it is). Off, the
+  // element is a shear viscosity and the area constant the elastic branch's alone.
+  bool skalak_area_term = false;
 };
 
 class ElasticMembrane {

@@ -150,6 +150,7 @@ class Simulation3D {
   }
 
   void step(double shear_factor) {
+    if (!broken_.empty()) return;  // the output loop reports it after this output interval
     const std::size_t n = mesh_.vertex_count();
     forces_.compute(mesh_, force_);
     if (load_on_) m3::add_pulling_forces(patches_, pull_force_, force_);  // the beads (stretch protocol)
@@ -171,6 +172,7 @@ class Simulation3D {
     if (update_ != ib::MembraneUpdate::previous_velocity) ib::interpolate<3>(grid_, u, positions(), n, U_.data(), delta_);  // (19)
     if (update_ == ib::MembraneUpdate::adams_bashforth2) ib::advance_adams_bashforth2<3>(positions(), U_.data(), U_previous_, n, 1.0);
     else ib::advance<3>(positions(), U_.data(), n, 1.0);  // (20)
+    check_positions();
     auto t3 = Clock::now();
     timings_.coupling += std::chrono::duration<double>((t1 - t0) + (t3 - t2)).count();
     timings_.fluid += std::chrono::duration<double>(t2 - t1).count();
@@ -180,6 +182,10 @@ class Simulation3D {
     }
     ++steps_;
   }
+
+  // Why step() stopped ("" while it runs): a vertex that is NaN or outside the channel would
+  // index the lattice out of bounds in the next spreading.
+  const std::string& failure() const { return broken_; }
 
   // Stretch protocol: whether the beads pull during the next steps (the output loop sets it).
   void set_load(bool on) { load_on_ = on; }
@@ -339,6 +345,19 @@ class Simulation3D {
  private:
   double* positions() { return reinterpret_cast<double*>(mesh_.x.data()); }
 
+  // Stops the member (failure()) at the first vertex that is NaN, beyond a wall, or absurdly far
+  // along the periodic directions: a blow-up between two outputs.
+  void check_positions() {
+    for (std::size_t v = 0; v < mesh_.x.size(); ++v) {
+      const m3::Vec3& x = mesh_.x[v];
+      if (x.allFinite() && x.y() >= 0.0 && x.y() <= grid_.ny && std::abs(x.x()) < 1e6 && std::abs(x.z()) < 1e6) continue;
+      std::ostringstream why;
+      why << "membrane vertex " << v << " left the fluid (NaN or beyond a wall) at step " << steps_ + 1;
+      broken_ = why.str();
+      return;
+    }
+  }
+
   // The fluid writes u, rho and reads the force only on the rows (y, z) the membrane can
   // reach this step (Fluid::set_macroscopic_region, ib::support_rows): the bounding box of
   // X(n) widened by kRegionMargin nodes = 3 (the width-4 delta: spreading and interpolation at
@@ -397,6 +416,7 @@ class Simulation3D {
       p.maxwell = maxwell.power_law
                       ? m3::MaxwellElement{maxwell.E_m, tau_m_, 1.0, m3::PowerLawRelaxation{true, s.power_law.n, units_.shear_rate}}
                       : m3::MaxwellElement{maxwell.E_m, tau_m_, 1.0};
+      p.maxwell.skalak_area_term = s.physics_version == PhysicsVersion::v5;  // the law as it was
     }
     // E_b is the bending number of the sphere the membrane is: with the markers on r_m = a -
     // inset, E_B = E_b r_m^2 E_s, so bending stands to the shear elasticity (E_B / (E_s r_m^2))
@@ -479,6 +499,7 @@ class Simulation3D {
   Units units_;
   std::vector<int> n_;
   ib::Grid grid_;
+  std::string broken_;  // failure()
   lbm::Fluid<lbm::D3Q19> fluid_;
   m3::Mesh mesh_;
   m3::MembraneForces forces_;

@@ -98,3 +98,24 @@ TEST_CASE("the transverse narrowing doubles with the force at small forces", "[s
   // Linear to within 2 %: the second-order part (the patches' large local strain) grows as F^2.
   CHECK(strain(two) / strain(one) == Approx(2.0).epsilon(0.02));
 }
+
+TEST_CASE("a viscous Skalak cell with a large area constant stretches and recovers without blowing up", "[stretch3d]") {
+  // The standard linear solid's Maxwell element takes Skalak's law without its area term
+  // (solver/membrane3d/elasticity.cpp, maxwell_law_of): with C = 100 and G = 50 its instantaneous
+  // area modulus was 50 x 201 times the shear modulus, and this member blew up within its first
+  // output interval (at rest as in shear). The released cell must move back towards its rest shape.
+  omp_set_num_threads(1);
+  const Scene scene = Scene::from_json(nlohmann::json::parse(R"({"dim": 3, "shape": "biconcave", "law": "skalak", "C": 100,
+      "Ca": 0.6, "E_b": 0.004, "V": 1, "eta": 20,
+      "resolution": {"a": 4, "domain": [6, 4, 4], "mesh_level": 2, "tau": 0.8},
+      "protocol": {"stretch": {"force": 0.5, "contact_diameter": 0.7, "until": "time", "kt": 1},
+                   "recover": {"until": "time", "kt": 0.5}},
+      "output": {"interval_kt": 0.1}})"), "viscous_skalak_stretch.json");
+  const io::MemberData d = testing::run_scene3d(scene, "viscous_skalak_stretch");
+  INFO(d.status);
+  REQUIRE(d.status == "complete");
+  const auto& L = d.series.at("D_axial");
+  const std::size_t release = release_row(d);
+  CHECK(L[release] > L.front());  // pulled longer
+  CHECK(L.back() < L[release]);   // and recovering after the release
+}

@@ -44,3 +44,28 @@ TEST_CASE("a 3D member past the Ca edge ends unstable with the kt and the cause"
   for (const auto& [name, v] : d.series)
     for (double x : v) REQUIRE(std::isfinite(x));
 }
+
+TEST_CASE("a 3D member that blows up between two outputs ends unstable instead of indexing the lattice with NaN", "[capsule3d]") {
+  // A membrane far too stiff for the explicit coupling (Ca 5e-4 at tau 3, a = 4): the vertices
+  // are NaN or beyond a wall within a few steps, long before the first output row at kt 0.1.
+  // Before the guard, the next step's spreading indexed the lattice with them and the process
+  // died of a segmentation fault, leaving no status.
+  const nlohmann::json j = {{"dim", 3}, {"shape", "sphere"}, {"Ca", 5e-4}, {"E_b", 0}, {"V", 1}, {"eta", 0},
+                            {"resolution", {{"a", 4}, {"mesh_level", 2}, {"tau", 3}}},
+                            {"protocol", {{"shear", {{"until", "time"}, {"kt", 0.5}}}, {"recover", {{"until", "time"}, {"kt", 0}}}}},
+                            {"output", {{"interval_kt", 0.1}}}};
+  const Scene scene = Scene::from_json(j, "unstable3d_fast_test.json");
+  const std::string path = (std::filesystem::temp_directory_path() / "unstable3d_fast_test.h5").string();
+  {
+    io::MemberWriter out(path);
+    out.finish(run_simulation3d(scene, out, true));
+  }
+  const io::MemberData d = io::read_member(path);
+  std::filesystem::remove(path);
+  INFO(d.status);
+  REQUIRE(d.status.rfind("unstable at kt = ", 0) == 0);
+  CHECK(std::stod(d.status.substr(17)) < 0.1);
+  CHECK(d.status.find("left the fluid") != std::string::npos);
+  for (const auto& [name, v] : d.series)
+    for (double x : v) REQUIRE(std::isfinite(x));
+}
