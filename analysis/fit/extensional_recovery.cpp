@@ -19,10 +19,10 @@ double at_nearest(const std::vector<double>& kt, const std::vector<double>& y, d
 }  // namespace
 
 FitResult fit_extensional_recovery(const std::vector<double>& kt, const std::vector<double>& lambda, double t_stop,
-                                   double t_end) {
+                                   double t_end, double lambda_rest) {
   const std::string model = "extensional recovery (Hochmuth, Worthy and Evans 1979)";
   if (kt.empty() || kt.size() != lambda.size()) return FitResult::failure(model, "no series, or kt and lambda differ in length");
-  const double lambda_0 = at_nearest(kt, lambda, t_stop), lambda_inf = at_nearest(kt, lambda, t_end);
+  const double lambda_0 = at_nearest(kt, lambda, t_stop), lambda_inf = std::isfinite(lambda_rest) ? lambda_rest : at_nearest(kt, lambda, t_end);
   if (!(lambda_inf > 0.0)) return FitResult::failure(model, "lambda_inf is not positive");
   // The left-hand side decays from A to 0 as (86) decays from D_stop: the same fit.
   std::vector<double> y(lambda.size());

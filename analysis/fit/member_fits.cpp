@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "analysis/fit/exponential_fits.hpp"
+#include "analysis/fit/extensional_recovery.hpp"
 
 namespace capsule::analysis {
 
@@ -19,8 +20,21 @@ const char* model_of(const std::string& key) {
   if (key == "two_phase_R2") return "two-phase recovery, late (88)";
   if (key == "double_exponential") return "double exponential (90)";
   if (key == "double_exponential_free") return "double exponential, free amplitudes";
+  if (key == "extensional_recovery") return "extensional recovery (Hochmuth, Worthy and Evans 1979)";
   return "unknown";
 }
+// A released stretch member's recovery of lambda = D_axial / D_transverse after t_stop, towards
+// the lambda of its first row: the cell at rest before the pull, the shape it recovers to.
+FitResult extensional_recovery_of(const io::MemberData& member, double t_stop, double t_end) {
+  const auto axial = member.series.find("D_axial"), transverse = member.series.find("D_transverse");
+  if (axial == member.series.end() || transverse == member.series.end())
+    return FitResult::failure(model_of("extensional_recovery"),
+                              "member has no D_axial or D_transverse series (a stretch member's)");
+  std::vector<double> lambda(axial->second.size());
+  for (std::size_t i = 0; i < lambda.size(); ++i) lambda[i] = axial->second[i] / transverse->second[i];
+  return fit_extensional_recovery(member.series.at("kt"), lambda, t_stop, t_end, lambda.front());
+}
+
 }  // namespace
 
 MemberFits failed_member(const std::vector<std::string>& fits, const std::string& reason) {
@@ -61,6 +75,7 @@ MemberFits fit_member(const io::MemberData& member, const std::vector<std::strin
       out[f] = fit_double_exponential(kt, D, marker("D_stop"), marker("D_inf"), marker("t_stop"), t_end);
     if (f == "double_exponential_free")
       out[f] = fit_double_exponential_free(kt, D, marker("D_stop"), marker("D_inf"), marker("t_stop"), t_end);
+    if (f == "extensional_recovery") out[f] = extensional_recovery_of(member, marker("t_stop"), t_end);
   }
   return out;
 }

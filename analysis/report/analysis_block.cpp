@@ -287,10 +287,11 @@ std::vector<std::string> parse_fits(const nlohmann::json& j, const std::string& 
   std::set<std::string> seen;
   for (std::size_t i = 0; i < out.size(); ++i) {
     const auto& f = out[i];
-    if (std::find(known_fits().begin(), known_fits().end(), f) == known_fits().end())
-      fail(where, "/fits/" + std::to_string(i),
-           "expected one of response, recovery, two_phase, double_exponential, double_exponential_free; got \"" +
-               f + "\"");
+    if (std::find(known_fits().begin(), known_fits().end(), f) == known_fits().end()) {
+      std::string allowed;
+      for (const auto& k : known_fits()) allowed += (allowed.empty() ? "" : ", ") + k;
+      fail(where, "/fits/" + std::to_string(i), "expected one of " + allowed + "; got \"" + f + "\"");
+    }
     if (!seen.insert(f).second) fail(where, "/fits/" + std::to_string(i), "\"" + f + "\" listed twice");
   }
   return out;
@@ -415,7 +416,7 @@ const std::vector<std::string>& default_setting_keys() {
 
 const std::vector<std::string>& known_fits() {
   static const std::vector<std::string> fits{"response", "recovery", "two_phase", "double_exponential",
-                                             "double_exponential_free"};
+                                             "double_exponential_free", "extensional_recovery"};
   return fits;
 }
 
@@ -424,6 +425,7 @@ std::vector<std::string> times_of_fit(const std::string& fit) {
   if (fit == "recovery") return {"k_tau_r"};
   if (fit == "two_phase" || fit == "double_exponential") return {"k_tau_R1", "k_tau_R2"};
   if (fit == "double_exponential_free") return {"k_tau_R1", "k_tau_R2", "w_R1"};
+  if (fit == "extensional_recovery") return {"k_t_c"};
   return {};
 }
 

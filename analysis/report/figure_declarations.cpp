@@ -142,6 +142,11 @@ std::string column_quantity(const std::string& column, const std::string& normal
     if (normalise == "seconds") return "tau_" + which + " (s)";
     return "k tau_" + which;
   }
+  if (q == "k_t_c") {  // the extensional recovery's t_c (Hochmuth et al. 1979)
+    if (normalise == "tau_e" || normalise == "tau_v") return "t_c/" + normalise;
+    if (normalise == "seconds") return "t_c (s)";
+    return "k t_c";
+  }
   return q;
 }
 

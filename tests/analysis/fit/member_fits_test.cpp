@@ -1,6 +1,7 @@
 // fit_member: markers from a member file feed the right model and interval.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -63,5 +64,56 @@ TEST_CASE("fit_member: two-phase recovery (87)-(88) from a member file's markers
   v = column_value(fits, "recovery.k_tau_r");
   CHECK_FALSE(v.parameter);
   CHECK(v.reason == "fit recovery not made");
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("fit_member: a released stretch member's extensional recovery towards its rest shape", "[analysis][stretch]") {
+  const auto dir = std::filesystem::temp_directory_path() / ("capsule_analysis_stretch_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "member.h5").string();
+  // At rest the disc is round (lambda = 1.02 from its mesh); pulled until t_stop = 4 to
+  // lambda_0 = 2; released, Hochmuth's form decays with k t_c = 3 back to the rest lambda. Only
+  // 3 t_c of recovery: lambda(t_end) is still e^-3 of the way off, so the rest shape, not the
+  // last row, must be the lambda_inf (the last row would give k t_c = 2.65).
+  const double t_stop = 4.0, t_c = 3.0, lambda_rest = 1.02, lambda_0 = 2.0, D_T = 6.0;
+  const double A = (lambda_0 - lambda_rest) / (lambda_0 + lambda_rest);
+  {
+    capsule::io::MemberWriter w(path);
+    w.set_scene({{"Ca", 0.69}});
+    for (int i = 0; i <= 650; ++i) {
+      const double t = 0.02 * i;
+      double lambda = lambda_rest + (lambda_0 - lambda_rest) * std::min(t / t_stop, 1.0);
+      if (t > t_stop) {
+        const double y = A * std::exp(-(t - t_stop) / t_c);
+        lambda = lambda_rest * (1 + y) / (1 - y);
+      }
+      w.append({{"kt", t}, {"D_xy", 0.1}, {"D_axial", lambda * D_T}, {"D_transverse", D_T}});
+    }
+    w.set_markers({{"t_stop", t_stop}, {"t_end", 13.0}});
+    w.finish("complete");
+  }
+  const auto member = capsule::io::read_member(path);
+  const MemberFits fits = fit_member(member, {"extensional_recovery"});
+  const FitResult& fit = fits.at("extensional_recovery");
+  REQUIRE(fit.ok);
+  // Noise-free and the exact model: the rows' round-off bounds the error.
+  CHECK(fit.parameter("k_t_c")->value == Approx(t_c).epsilon(1e-6));
+  CHECK(fit.fixed["lambda_inf"].get<double>() == Approx(lambda_rest).epsilon(1e-12));
+  CHECK(fit.fixed["lambda_0"].get<double>() == Approx(lambda_0).epsilon(1e-12));
+  CHECK(column_value(fits, "extensional_recovery.k_t_c").parameter != nullptr);
+
+  // A shear member has no D_axial: the fit fails and says why.
+  const std::string shear_path = (dir / "shear.h5").string();
+  {
+    capsule::io::MemberWriter w(shear_path);
+    w.set_scene({{"Ca", 0.1}});
+    for (int i = 0; i <= 10; ++i) w.append({{"kt", 0.1 * i}, {"D_xy", 0.1}});
+    w.set_markers({{"t_stop", 0.5}});
+    w.finish("complete");
+  }
+  const FitResult none = fit_member(capsule::io::read_member(shear_path), {"extensional_recovery"}).at("extensional_recovery");
+  INFO(none.reason);
+  CHECK(!none.ok);
+  CHECK(none.reason.find("D_axial") != std::string::npos);
   std::filesystem::remove_all(dir);
 }
