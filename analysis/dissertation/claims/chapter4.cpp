@@ -150,6 +150,47 @@ ClaimResult claim_4_1_1_worst_fits(const DissertationResults& res) {
   return r;
 }
 
+// Sec. 4.1.1: "Evans and Hochmuth's measurements from micropipette aspiration measured k tau_R ~
+// 10^-1 seconds ... Fischer reported measuring 10 - 30 seconds ... One wonders if such a contrast
+// may be explained by the two phases proposed here." A red blood cell given in physical units,
+// released from tank-treading: (87)'s tau_R1 in seconds near the aspiration's 0.1 s and (88)'s
+// tau_R2 in Fischer's 10-30 s. The seconds are k tau over the member's shear rate k (the swept
+// key physical.shear_rate_per_s); each member judged (the finest level where the campaign has a
+// ladder).
+ClaimResult claim_4_1_1_two_phases_seconds(const DissertationResults& res) {
+  constexpr double aspiration_s = 0.1, factor = 3.0, fischer_low_s = 10.0, fischer_high_s = 30.0;
+  auto [r, c] = open_claim(res, "4.1.1 two phases in seconds", {{"factor", num(factor)}});
+  if (!c) return r;
+  bool ok = true;
+  std::string text, why;
+  int judged = 0;
+  for (const DissertationMember* m : c->in_case("")) {
+    const double k = parameter(*m, "physical.shear_rate_per_s");
+    const auto r1 = m->fits.find("two_phase_R1"), r2 = m->fits.find("two_phase_R2");
+    const FitParameter* p1 = r1 == m->fits.end() || !r1->second.ok ? nullptr : r1->second.parameter("k_tau_R1");
+    const FitParameter* p2 = r2 == m->fits.end() || !r2->second.ok ? nullptr : r2->second.parameter("k_tau_R2");
+    if (!(k > 0) || !p1 || !p2) {
+      why += (why.empty() ? "" : "; ") + m->slug + (k > 0 ? ": no (87)-(88) fit" : ": no physical.shear_rate_per_s");
+      continue;
+    }
+    const double t1 = p1->value / k, t2 = p2->value / k;
+    const bool first = t1 >= aspiration_s / factor && t1 <= aspiration_s * factor;
+    const bool second = t2 >= fischer_low_s && t2 <= fischer_high_s;
+    ok = ok && first && second;
+    ++judged;
+    text += (text.empty() ? "" : "; ") + m->slug + ": tau_R1 " + num(t1) + " s (" +
+            (first ? "within" : "outside") + " a factor " + num(factor) + " of 0.1 s), tau_R2 " + num(t2) + " s (" +
+            (second ? "within Fischer's 10-30 s" : t2 < fischer_low_s ? num(fischer_low_s / t2) + " x below Fischer's 10 s"
+                                                                       : "above Fischer's 30 s") + ")";
+  }
+  if (judged == 0) {
+    r.measured = "cannot tell (members missing): no member with both phases fitted" + (why.empty() ? "" : " (" + why + ")");
+    return r;
+  }
+  set(r, ok, text + (why.empty() ? "" : "; not counted: " + why));
+  return r;
+}
+
 // Sec. 4.1.2: "Whether decreasing or increasing occurs is determined by the angle of inclination theta
 // of the capsule's major axis when the shear flow is stopped" (Fig. 31: -pi/3 against pi/6). The
 // member stopped at theta = pi/6 against the member of equal parameters stopped at -pi/3.
@@ -608,6 +649,7 @@ ClaimList chapter4_claims() {
           once("4.1.1 memory", claim_4_1_1_memory),
           once("4.1.1 dip and rise", claim_4_1_1_dip_rise),
           once("4.1.1 worst fits", claim_4_1_1_worst_fits),
+          once("4.1.1 two phases in seconds", claim_4_1_1_two_phases_seconds),
           once("4.1.2 direction", claim_4_1_2_direction),
           once("4.1.2 single exponential", claim_4_1_2_single),
           once("4.1.2 R2", claim_4_1_2_r2),

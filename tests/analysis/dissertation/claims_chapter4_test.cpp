@@ -152,3 +152,31 @@ TEST_CASE("Chapter 4 claims: the poorest (87) fits at the smallest Ca", "[analys
   CHECK(small.measured.rfind("R^2 of (87) lowest at Ca 0.04; R^2: Ca 0.04: 0.93", 0) == 0);
   CHECK(judge([](double c) { return c > 0.09 ? 0.9 : 0.99; }).verdict == Verdict::differs);
 }
+
+TEST_CASE("Chapter 4 claims: the two phases in seconds against aspiration's 0.1 s and Fischer's 10-30 s", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_claims_two_phases_seconds");
+  // One red cell member at k = 2000 1/s whose (87)-(88) give k tau_R1 and k tau_R2 (in kt).
+  const auto judge = [&](double k_tau_R1, double k_tau_R2, bool with_rate = true) {
+    std::map<std::string, double> p{{"Ca", 1.128}, {"E_b", 0.0042}, {"V", 5.0}, {"eta", 177.3}};
+    if (with_rate) p["physical.shear_rate_per_s"] = 2000;
+    std::map<std::string, FitResult> fits;
+    fits["two_phase_R1"] = known_fit("two-phase (87)", {{"k_tau_R1", {k_tau_R1, 1.0}}}, 0.99);
+    fits["two_phase_R2"] = known_fit("two-phase (88)", {{"k_tau_R2", {k_tau_R2, 10.0}}}, 0.99);
+    write_fits(tmp.path, "rbc_two_phase_seconds", nlohmann::json::array({member_json("rbc-a5", "", p, fits)}));
+    return find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "4.1.1", "micropipette aspiration");
+  };
+  // 0.1 s and 20 s: the text's reading holds.
+  const ClaimResult holds = judge(200, 40000);
+  INFO(holds.measured);
+  CHECK(holds.verdict == Verdict::agrees);
+  CHECK(holds.measured.find("tau_R1 0.1 s (within a factor 3 of 0.1 s), tau_R2 20 s (within Fischer's 10-30 s)") != std::string::npos);
+  // The slow phase at 0.5 s, 20 x short of Fischer's 10 s: the phases do not explain the contrast.
+  const ClaimResult short_second = judge(200, 1000);
+  INFO(short_second.measured);
+  CHECK(short_second.verdict == Verdict::differs);
+  CHECK(short_second.measured.find("tau_R2 0.5 s (20 x below Fischer's 10 s)") != std::string::npos);
+  // The first phase 10 x too slow differs as well.
+  CHECK(judge(2000, 40000).verdict == Verdict::differs);
+  // Without the shear rate the seconds cannot be read.
+  CHECK(judge(200, 40000, false).verdict == Verdict::cannot_tell);
+}
