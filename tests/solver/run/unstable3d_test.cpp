@@ -4,11 +4,11 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <filesystem>
 
 #include "solver/io/member_file.hpp"
 #include "solver/run/simulation3d.hpp"
 #include "solver/scene/scene.hpp"
+#include "tests/solver/run/run_scene3d.hpp"
 
 using namespace capsule;
 
@@ -20,14 +20,7 @@ TEST_CASE("a 3D member past the Ca edge ends unstable with the kt and the cause"
                             {"resolution", {{"a", 4}, {"mesh_level", 2}}},
                             {"protocol", {{"shear", {{"until", "time"}, {"kt", 12}}}, {"recover", {{"until", "time"}, {"kt", 0}}}}},
                             {"output", {{"interval_kt", 0.05}}}};
-  const Scene scene = Scene::from_json(j, "unstable3d_test.json");
-  const std::string path = (std::filesystem::temp_directory_path() / "unstable3d_test.h5").string();
-  {
-    io::MemberWriter out(path);
-    out.finish(run_simulation3d(scene, out, true));
-  }
-  const io::MemberData d = io::read_member(path);
-  std::filesystem::remove(path);
+  const io::MemberData d = testing::run_scene3d(Scene::from_json(j, "unstable3d_test.json"), "unstable3d_test");
   INFO(d.status);
   REQUIRE(d.status.rfind("unstable at kt = ", 0) == 0);
   const double kt = std::stod(d.status.substr(17));
@@ -54,14 +47,7 @@ TEST_CASE("a 3D member that blows up between two outputs ends unstable instead o
                             {"resolution", {{"a", 4}, {"mesh_level", 2}, {"tau", 3}}},
                             {"protocol", {{"shear", {{"until", "time"}, {"kt", 0.5}}}, {"recover", {{"until", "time"}, {"kt", 0}}}}},
                             {"output", {{"interval_kt", 0.1}}}};
-  const Scene scene = Scene::from_json(j, "unstable3d_fast_test.json");
-  const std::string path = (std::filesystem::temp_directory_path() / "unstable3d_fast_test.h5").string();
-  {
-    io::MemberWriter out(path);
-    out.finish(run_simulation3d(scene, out, true));
-  }
-  const io::MemberData d = io::read_member(path);
-  std::filesystem::remove(path);
+  const io::MemberData d = testing::run_scene3d(Scene::from_json(j, "unstable3d_fast_test.json"), "unstable3d_fast_test");
   INFO(d.status);
   REQUIRE(d.status.rfind("unstable at kt = ", 0) == 0);
   CHECK(std::stod(d.status.substr(17)) < 0.1);
