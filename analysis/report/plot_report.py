@@ -22,6 +22,7 @@ os.makedirs(out, exist_ok=True)
 WORDS = {
     "kt": "time $kt$",
     "D_xy": "Taylor deformation $D_{xy}$",
+    "lambda": r"extension ratio $\lambda = D_{axial} / D_{transverse}$",
     "D": "Taylor deformation $D$",
     "k tau_s": r"response time $k\tau_s$",
     "k tau_r": r"recovery time $k\tau_r$",
@@ -36,6 +37,12 @@ WORDS = {
     "tau_R1 (s)": r"first-phase recovery time $\tau_{R1}$ (s)",
     "tau_R2 (s)": r"second-phase recovery time $\tau_{R2}$ (s)",
     "w_R1": r"fast phase's share $w_{R1}$ (fraction)",
+    "k t_c": r"extensional recovery time $k t_c$",
+    "t_c/tau_v": r"normalised extensional recovery time $t_c / (\mu_s / G_s)$",
+    "t_c (s)": r"extensional recovery time $t_c$ (s)",
+    "physical.membrane_viscosity_uN_s_per_m": r"membrane viscosity $\mu_s$ ($\mu$N s/m)",
+    "physical.shear_modulus_uN_per_m": r"shear modulus $G_s$ ($\mu$N/m)",
+    "physical.shear_rate_per_s": r"shear rate $k$ (1/s)",
     "gamma_max": r"maximum surface shear rate $\gamma_{max}/k$",
     "gamma_min": r"minimum surface shear rate $\gamma_{min}/k$",
     "theta": r"inclination $\theta$ (rad)",
@@ -56,7 +63,8 @@ WORDS = {
 SYMBOL = {  # short forms for legends
     "k tau_s": r"$k\tau_s$", "k tau_r": r"$k\tau_r$", "k tau_R1": r"$k\tau_{R1}$", "k tau_R2": r"$k\tau_{R2}$",
     "tau_s/tau_e": r"$\tau_s/\tau_e$", "tau_r/tau_e": r"$\tau_r/\tau_e$", "tau_s/tau_v": r"$\tau_s/\tau_v$",
-    "tau_r/tau_v": r"$\tau_r/\tau_v$", "w_R1": r"$w_{R1}$",
+    "tau_r/tau_v": r"$\tau_r/\tau_v$", "w_R1": r"$w_{R1}$", "k t_c": r"$k t_c$", "t_c/tau_v": r"$t_c/\tau_v$",
+    "t_c (s)": r"$t_c$ (s)",
 }
 FITS = {  # fit names in words
     "response": "response (85)", "recovery": "recovery (86)", "two_phase": "two phases (87)-(89)",
@@ -145,8 +153,8 @@ def fit_label(c):
     return FITS.get(c["model"], c["model"]) + ":\n" + ", ".join(parts)
 
 
-def draw_ab(ax, m):
-    for label, key in (("A", "t_max"), ("B", "t_stop")):
+def draw_ab(ax, m, marks=(("A", "t_max"), ("B", "t_stop"))):
+    for label, key in marks:
         t = m["markers"].get(key)
         if t is not None:
             ax.axvline(t, color="0.6", lw=0.6, ls=":")
@@ -157,15 +165,20 @@ def draw_ab(ax, m):
 def draw_member(decl):
     m = members[decl["source"]]
     fig, ax = plt.subplots(figsize=(5.5, 3.6))
-    ax.plot(m["kt"], m["D_xy"], "k-", lw=1.0, label="simulation")
+    # A stretch member carries its extension ratio ("y"): drawn instead of D_xy, with its fit.
+    y = m.get("y", {"name": "D_xy", "values": m["D_xy"]})
+    ax.plot(m["kt"], y["values"], "k-", lw=1.0, label="simulation")
     for c in m["curves"]:
         ax.plot(c["kt"], c["D"], "--", lw=1.6, label=fit_label(c))
-    draw_ab(ax, m)
+    stretch = y["name"] != "D_xy"
+    draw_ab(ax, m, (("B", "t_stop"),) if stretch else (("A", "t_max"), ("B", "t_stop")))
     ax.set_xlabel(words("kt"))
-    ax.set_ylabel(words("D_xy"))
-    ax.set_title(title_of(decl, "Taylor deformation against time: " + m["title"]), fontsize=9, pad=14)
+    ax.set_ylabel(words(y["name"]))
+    what = "Extension ratio" if stretch else "Taylor deformation"
+    ax.set_title(title_of(decl, what + " against time: " + m["title"]), fontsize=9, pad=14)
     legend_outside(ax)
-    save(fig, decl["file"], MARKER_AB + "; fitted values with 95 % intervals (Student's t).")
+    marks = "B: $t_{stop}$, the load released" if stretch else MARKER_AB
+    save(fig, decl["file"], marks + "; fitted values with 95 % intervals (Student's t).")
 
 
 # Fig. 64: range of the surface shear rate (101) over a power-law membrane, units of k.

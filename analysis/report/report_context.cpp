@@ -40,6 +40,11 @@ MemberAnalysis analyse_member(const MemberRef& ref, const AnalysisBlock& block, 
       if (const auto it = data->series.find("D_xy"); it != data->series.end()) m.D = it->second;
       if (const auto it = data->series.find("D_extent"); it != data->series.end()) m.D_extent = it->second;
       if (const auto it = data->series.find("theta"); it != data->series.end()) m.theta = it->second;
+      if (const auto ax = data->series.find("D_axial"), tr = data->series.find("D_transverse");
+          ax != data->series.end() && tr != data->series.end() && ax->second.size() == tr->second.size()) {
+        m.lambda.resize(ax->second.size());
+        for (std::size_t i = 0; i < m.lambda.size(); ++i) m.lambda[i] = ax->second[i] / tr->second[i];
+      }
       if (const auto lo = data->series.find("gamma_min"), hi = data->series.find("gamma_max");
           lo != data->series.end() && hi != data->series.end())
         m.gamma_min = lo->second, m.gamma_max = hi->second;
@@ -117,7 +122,7 @@ std::vector<const MemberAnalysis*> ordered(const std::vector<MemberAnalysis>& me
 std::vector<std::string> fit_keys(const MemberFits& fits) {
   std::vector<std::string> keys;
   for (const char* k : {"response", "recovery", "two_phase_R1", "two_phase_R2", "double_exponential",
-                        "double_exponential_free"})
+                        "double_exponential_free", "extensional_recovery"})
     if (fits.count(k)) keys.push_back(k);
   return keys;
 }

@@ -30,6 +30,7 @@ struct MemberAnalysis {
   std::vector<double> D_extent;                    // D from the extents L, W (3D members; published curves)
   std::vector<double> gamma_min, gamma_max;        // 3D power-law members: surface shear rate range (Fig. 64)
   std::vector<double> theta;                       // inclination of the major axis, rad (Figs. 61, 63)
+  std::vector<double> lambda;                      // stretch members: D_axial / D_transverse (Hochmuth's extension ratio)
   std::map<std::string, std::vector<double>> series;  // the series the experiments compare (compare[].series)
   std::map<std::string, double> markers;
   double wall_seconds = k_nan;                     // the member file's run time (attribute wall_seconds)

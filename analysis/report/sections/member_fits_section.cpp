@@ -61,14 +61,23 @@ nlohmann::json member_figure(const MemberAnalysis& m, const std::set<std::string
   mj["markers"] = nlohmann::json::object();
   for (const auto& [k, v] : m.markers)
     if (std::isfinite(v)) mj["markers"][k] = v;
+  // A stretch member is drawn as its extension ratio lambda = D_axial / D_transverse (the
+  // quantity Hochmuth's recovery fit describes), D_xy of the disc's projection saying little.
+  const bool stretch = m.lambda.size() == m.kt.size() && !m.lambda.empty();
+  if (stretch) mj["y"] = {{"name", "lambda"}, {"values", m.lambda}};
   for (const auto& key : fit_keys(m.fits)) {
     const FitResult& f = m.fits.at(key);
     if (!f.ok) continue;
+    // The extensional fit's curve is (lambda - lambda_inf)/(lambda + lambda_inf): drawn as lambda.
+    const bool extensional = key == "extensional_recovery";
+    if (extensional != stretch) continue;
+    const double lambda_inf = extensional ? f.fixed.value("lambda_inf", k_nan) : k_nan;
     std::vector<double> t, d;
     for (double x : m.kt)
       if (x >= f.t_begin && x <= f.t_end) {
+        const double y = evaluate_fit(f, x);
         t.push_back(x);
-        d.push_back(evaluate_fit(f, x));
+        d.push_back(extensional ? lambda_inf * (1.0 + y) / (1.0 - y) : y);
       }
     std::string label = f.model;
     nlohmann::json parameters = nlohmann::json::array();  // the figure prints each with its 95 % interval

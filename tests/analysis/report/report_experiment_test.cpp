@@ -161,3 +161,40 @@ TEST_CASE("Experiments block: unknown data, columns and keys are refused with th
   req.analysis = block;
   CHECK_THROWS_WITH(write_report(req), Contains("/analysis/experiments/0/colour: unknown key"));
 }
+
+TEST_CASE("Extensional recovery in a report: the fit per member, and the member drawn as its extension ratio",
+          "[analysis][experiments]") {
+  TempDir tmp("extensional_report");
+  ReportRequest req;
+  req.campaign_name = "hochmuth";
+  req.out_dir = (tmp.path / "report").string();
+  req.analysis = {{"fits", {"extensional_recovery"}}, {"figures", true}};
+  // Pulled to lambda_0 = 1.4 until t_stop = 4, then Hochmuth's recovery with k t_c = 2.5 towards the
+  // rest lambda 1: the figure's curve is lambda itself, from lambda_0 at the release.
+  const double t_stop = 4.0, t_c = 2.5, lambda_0 = 1.4, A = (lambda_0 - 1.0) / (lambda_0 + 1.0);
+  const fs::path dir = tmp.path / "members" / "released";
+  fs::create_directories(dir);
+  const nlohmann::json scene{{"dim", 3}, {"Ca", 0.61}, {"E_b", 0.004}, {"V", 1}, {"eta", 21}, {"protocol", {{"stretch", {{"force", 0.5}}}}}};
+  {
+    capsule::io::MemberWriter w((dir / "member.h5").string());
+    w.set_scene(scene);
+    for (int i = 0; i <= 160; ++i) {
+      const double t = 0.1 * i;
+      const double y = A * (t <= t_stop ? t / t_stop : std::exp(-(t - t_stop) / t_c));
+      const double lambda = t <= t_stop ? 1.0 + (lambda_0 - 1.0) * t / t_stop : (1.0 + y) / (1.0 - y);
+      w.append({{"kt", t}, {"D_xy", 0.1}, {"D_axial", 2.0 * lambda}, {"D_transverse", 2.0}});
+    }
+    w.set_markers({{"t_stop", t_stop}, {"t_end", 16.0}});
+    w.finish("complete");
+  }
+  req.members.push_back({"id_released", "released", (dir / "member.h5").string(), "", scene});
+  write_report(req);
+
+  CHECK_THAT(slurp(fs::path(req.out_dir) / "member_fits.md"), Contains("| k_t_c | 2.5 |"));
+  const auto fd = nlohmann::json::parse(slurp(fs::path(req.out_dir) / "figures" / "figure_data.json"));
+  const auto& m = fd["members"][0];
+  CHECK(m["y"]["name"] == "lambda");
+  CHECK(m["y"]["values"][40].get<double>() == Approx(lambda_0));
+  REQUIRE(m["curves"].size() == 1);
+  CHECK(m["curves"][0]["D"][0].get<double>() == Approx(lambda_0).epsilon(1e-6));  // lambda, not the decaying ratio
+}
