@@ -59,17 +59,25 @@ Table time_table(const TableSpec& spec, const std::vector<MemberAnalysis>& membe
     t.header.push_back(c + " R2");
   }
   // Figure lines: one per case and per value of any other standard parameter that
-  // varies within the case (e.g. V on an (eta, V) grid) and per level of a resolution ladder
-  // (a = 5 and a = 7 are separate markers), so no line joins unlike members.
-  std::set<std::string> splitting{"Ca", "E_b", "V", "eta"};
+  // varies within the case independently of x (e.g. V on an (eta, V) grid, not eta where x is the
+  // membrane viscosity in physical units that sets it) and per resolution (a ladder's levels, or
+  // resolution.a swept: a = 5 and a = 7 are separate markers), so no line joins unlike members.
+  std::set<std::string> splitting{"Ca", "E_b", "V", "eta", "resolution.a"};
   splitting.insert(ladder_keys.begin(), ladder_keys.end());
   std::map<std::string, std::set<std::string>> varying;  // case -> parameter names
   for (const std::string& name : splitting) {
     if (name == spec.x) continue;
     std::map<std::string, std::set<double>> values;
-    for (const auto& m : members) values[m.ref.case_name].insert(parameter(m, name));
-    for (const auto& [c, v] : values)
-      if (v.size() > 1) varying[c].insert(name);
+    std::map<std::string, std::map<double, std::set<double>>> at_x;  // case -> x -> values
+    for (const auto& m : members) {
+      values[m.ref.case_name].insert(parameter(m, name));
+      at_x[m.ref.case_name][parameter(m, spec.x)].insert(parameter(m, name));
+    }
+    for (const auto& [c, v] : values) {
+      bool follows_x = true;  // one value at each x: a function of x, not a second parameter
+      for (const auto& [x, w] : at_x[c]) follows_x = follows_x && w.size() == 1;
+      if (v.size() > 1 && !follows_x) varying[c].insert(name);
+    }
   }
   auto line_of = [&](const MemberAnalysis& m) {
     std::string label = m.ref.case_name;

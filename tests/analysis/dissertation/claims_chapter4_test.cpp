@@ -162,7 +162,7 @@ TEST_CASE("Chapter 4 claims: the two phases in seconds against aspiration's 0.1 
     std::map<std::string, FitResult> fits;
     fits["two_phase_R1"] = known_fit("two-phase (87)", {{"k_tau_R1", {k_tau_R1, 1.0}}}, 0.99);
     fits["two_phase_R2"] = known_fit("two-phase (88)", {{"k_tau_R2", {k_tau_R2, 10.0}}}, 0.99);
-    write_fits(tmp.path, "rbc_two_phase_seconds", nlohmann::json::array({member_json("rbc-a5", "", p, fits)}));
+    write_fits(tmp.path, "ch4_rbc_two_phase_seconds", nlohmann::json::array({member_json("rbc-a5", "", p, fits)}));
     return find_claim(evaluate_claims(DissertationResults(tmp.path.string())), "4.1.1", "micropipette aspiration");
   };
   // 0.1 s and 20 s: the text's reading holds.
