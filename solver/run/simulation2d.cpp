@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "solver/ib/grid.hpp"
 #include "solver/ib/interpolation.hpp"
 #include "solver/ib/mobility.hpp"
 #include "solver/ib/viscosity_contrast.hpp"
@@ -158,15 +159,11 @@ void Simulation2D::step(double shear_factor) {
   ib::advance<2>(s.membrane.positions().data(), s.U.data(), n, 1.0);            // (20)
   // Never index the lattice with a node that is NaN or outside the channel (a blow-up between
   // two outputs): stop moving and let health() end the member.
-  const auto& X = s.membrane.positions();
-  for (std::size_t c = 0; c < n; ++c)
-    if (!std::isfinite(X[2 * c]) || !std::isfinite(X[2 * c + 1]) || X[2 * c + 1] < 0.0 || X[2 * c + 1] > s.grid.ny ||
-        std::abs(X[2 * c]) > 1e6) {
-      std::ostringstream why;
-      why << "membrane node " << c << " left the fluid (NaN or beyond a wall) at step " << s.steps + 1;
-      s.broken = why.str();
-      break;
-    }
+  if (const long c = ib::first_marker_outside<2>(s.grid, s.membrane.positions().data(), n); c >= 0) {
+    std::ostringstream why;
+    why << "membrane node " << c << " left the fluid (NaN or beyond a wall) at step " << s.steps + 1;
+    s.broken = why.str();
+  }
   if (s.contrast) s.update_contrast();
   auto t3 = Clock::now();
   s.t_membrane += std::chrono::duration<double>((t1 - t0) + (t3 - t2)).count();

@@ -34,6 +34,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "solver/ib/grid.hpp"
 #include "solver/ib/interpolation.hpp"
 #include "solver/ib/membrane_update.hpp"
 #include "solver/ib/power_law_viscosity.hpp"
@@ -348,13 +349,10 @@ class Simulation3D {
   // Stops the member (failure()) at the first vertex that is NaN, beyond a wall, or absurdly far
   // along the periodic directions: a blow-up between two outputs.
   void check_positions() {
-    for (std::size_t v = 0; v < mesh_.x.size(); ++v) {
-      const m3::Vec3& x = mesh_.x[v];
-      if (x.allFinite() && x.y() >= 0.0 && x.y() <= grid_.ny && std::abs(x.x()) < 1e6 && std::abs(x.z()) < 1e6) continue;
+    if (const long v = ib::first_marker_outside<3>(grid_, positions(), mesh_.vertex_count()); v >= 0) {
       std::ostringstream why;
       why << "membrane vertex " << v << " left the fluid (NaN or beyond a wall) at step " << steps_ + 1;
       broken_ = why.str();
-      return;
     }
   }
 

@@ -9,6 +9,7 @@
 #include <random>
 #include <vector>
 
+#include "solver/ib/grid.hpp"
 #include "solver/ib/delta.hpp"
 #include "solver/ib/interpolation.hpp"
 #include "solver/ib/layer_spreading.hpp"
@@ -596,4 +597,19 @@ TEST_CASE("membrane position update: forward Euler first order, Adams-Bashforth 
   CHECK(error(true, 0.025) < 0.05 * error(false, 0.025));
   CHECK(capsule::choice_from_name<MembraneUpdate>("previous_velocity") == MembraneUpdate::previous_velocity);
   CHECK_FALSE(capsule::choice_from_name<MembraneUpdate>("rk4"));
+}
+
+TEST_CASE("first_marker_outside finds the first marker that is NaN, beyond a wall or absurdly far", "[ib]") {
+  const capsule::ib::Grid g{8, 6, 4};
+  std::vector<double> X{1.0, 2.0, 3.0, 7.9, 5.9, 0.1, -3.0, 0.0, 10.0};  // three markers inside (x, z periodic)
+  CHECK(capsule::ib::first_marker_outside<3>(g, X.data(), 3) == -1);
+  X[4] = 6.2;  // marker 1 past the wall y = ny
+  CHECK(capsule::ib::first_marker_outside<3>(g, X.data(), 3) == 1);
+  X[4] = 5.0;
+  X[6] = std::nan("");  // marker 2 NaN
+  CHECK(capsule::ib::first_marker_outside<3>(g, X.data(), 3) == 2);
+  X[6] = 2e6;  // or a million lattice spacings along x
+  CHECK(capsule::ib::first_marker_outside<3>(g, X.data(), 3) == 2);
+  const std::vector<double> Y{1.0, 2.0, 1.0, -0.5};  // 2D: marker 1 below the wall y = 0
+  CHECK(capsule::ib::first_marker_outside<2>(g, Y.data(), 2) == 1);
 }

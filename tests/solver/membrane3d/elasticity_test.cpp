@@ -163,3 +163,31 @@ TEST_CASE("standard linear solid relaxes a step stretch with tau_m", "[membrane3
     REQUIRE((f[1] - expected).norm() < 1e-12 * expected.norm());  // exact recursion: round-off only
   }
 }
+
+TEST_CASE("a Skalak membrane's Maxwell element is Skalak's law without its area term (with it under physics version 5)",
+          "[membrane3d]") {
+  // The same equibiaxial step as above, on a Skalak law with C = 100: an area change only, where
+  // the area term is all but 1/201 of the stiffness. The element's tension must be Skalak's at E_m
+  // with C = 0 (a shear viscosity), or with C = 100 when it keeps the area term (version 5).
+  const Vec3 a(0, 0, 0), b(1, 0, 0), c(0.5, 0.8, 0);
+  const double lambda = 1.1, E_s = 1.0, E_m = 50.0, tau_m = 40.0, dt = 1.0, C = 100.0;
+  const Mesh ref = single_triangle(a, b, c);
+  const Mesh cur = single_triangle(lambda * a, lambda * b, lambda * c);
+  const double gain = tau_m / dt * (1 - std::exp(-dt / tau_m));  // (67) weight of a jump within one step
+  for (const bool area_term : {false, true}) {
+    MaxwellElement element{E_m, tau_m, dt};
+    element.skalak_area_term = area_term;
+    ElasticMembrane sls(ref, Constitutive{ElasticLaw::skalak, E_s, C}, element);
+    const ElasticMembrane spring(ref, Constitutive{ElasticLaw::skalak, E_s, C});
+    const ElasticMembrane maxwell_spring(ref, Constitutive{ElasticLaw::skalak, E_m, area_term ? C : 0.0});
+    std::vector<Vec3> f(3, Vec3::Zero()), fe(3, Vec3::Zero()), fm(3, Vec3::Zero());
+    sls.add_forces(ref, f);  // start: memory at the reference state
+    spring.add_elastic_forces(cur, fe);
+    maxwell_spring.add_elastic_forces(cur, fm);
+    f.assign(3, Vec3::Zero());
+    sls.add_forces(cur, f);
+    const Vec3 expected = fe[1] + gain * fm[1];
+    INFO("area term in the element: " << area_term);
+    CHECK((f[1] - expected).norm() < 1e-12 * expected.norm());  // exact recursion: round-off only
+  }
+}
