@@ -63,6 +63,20 @@ struct ResourcesExhausted {
   std::_Exit(kExitResourcesExhausted);
 }
 
+// Which numerics the scene ran (solver/scene/numerics_preset.hpp): under the dissertation's, every
+// item the preset set and every part of the text it does not emulate, a line each.
+void record_numerics(io::MemberWriter& out, const Scene& scene) {
+  out.set_attribute("numerics", choice_name(scene.numerics));
+  if (scene.numerics != Numerics::dissertation) return;
+  const auto joined = [](const std::vector<std::string>& lines) {
+    std::string text;
+    for (const auto& l : lines) text += (text.empty() ? "" : "\n") + l;
+    return text;
+  };
+  out.set_attribute("numerics_emulated", joined(numerics_item_lines(scene.dim, scene.shape)));
+  out.set_attribute("numerics_not_emulated", joined(numerics_gap_lines(scene.dim)));
+}
+
 }  // namespace
 
 int run_member(const RunOptions& options) {
@@ -114,6 +128,7 @@ int run_member(const RunOptions& options) {
       out.set_attribute("member_id", options.member_id);
       out.set_attribute("code_version", build::code_version);
       out.set_attribute("physics_version", choice_name(scene.physics_version));
+      record_numerics(out, scene);
       out.set_attribute("host", host_name());
       out.set_attribute("started", started);
       out.set_attribute("dim", static_cast<long>(scene.dim));

@@ -25,13 +25,12 @@ namespace capsule {
 
 
 namespace {
-// Peskin's 4-point delta, not the cosine delta (18): see solver/ib/delta.hpp for the measurement.
-constexpr ib::Delta kDelta = ib::Delta::peskin4;
 using Clock = std::chrono::steady_clock;
 // Mobility of the implicit Kelvin-Voigt prediction (Membrane::set_node_velocity). A node force F
 // reaches its own interpolated velocity over two steps: (3/8)^2 F / 2 = 0.0703 F in its own step
 // (the F/2 of u (22); Peskin self weight sum phi^2 = (3/8)^2 in 2D) and 0.0797 F in the next
-// (tests/solver/run: "IB self-mobility"). The prediction uses 2 (3/8)^2: measured at a = 10 it keeps
+// (tests/solver/run: "IB self-mobility"; the text's cosine delta (18) has the same sum phi^2 at a
+// node). The prediction uses 2 (3/8)^2: measured at a = 10 it keeps
 // eta up to 20 stable (0.1406: 12 runs, 16 does not; 24 blows up with either); D_xy(kt) at eta = 12 is the
 // same to 6 digits with 0.1406 and 0.2812, and steady states do not depend on it at all.
 constexpr double kKVMobility = 2.0 * (3.0 / 8.0) * (3.0 / 8.0);
@@ -40,6 +39,10 @@ constexpr double kKVMobility = 2.0 * (3.0 / 8.0) * (3.0 / 8.0);
 struct Simulation2D::Impl {
   Scene scene;
   Units units;
+  // resolution.kernel: Peskin's 4-point delta by default, not the cosine delta (18) (its first
+  // moment is not zero: docs/guide/model.md "Immersed boundary kernel"); cosine under the
+  // dissertation's numerics.
+  ib::Delta delta;
   ib::Grid grid;
   lbm::Fluid<lbm::D2Q9> fluid;
   membrane2d::Membrane membrane;
@@ -71,7 +74,7 @@ struct Simulation2D::Impl {
   }
 
   Impl(const Scene& s, const Units& u, const std::vector<int>& n)
-      : scene(s), units(u), grid{n[0], n[1], 1}, fluid(n[0], n[1], 1, u.nu, s.resolution.precision),
+      : scene(s), units(u), delta(s.resolution.delta), grid{n[0], n[1], 1}, fluid(n[0], n[1], 1, u.nu, s.resolution.precision),
         membrane(make_membrane(s, u, n)), exact_kv(s.resolution.kelvin_voigt_step == KelvinVoigtStep::exact_mobility) {
     U.assign(2 * membrane.size(), 0.0);
     area0 = membrane2d::polygon_area(membrane.positions());
@@ -134,7 +137,7 @@ void Simulation2D::step(double shear_factor) {
   if (s.units.mu_s > 0.0 && s.exact_kv) {
     // Kelvin-Voigt (31) with the velocities this step will really give the nodes, U = U_free + M F
     // (solver/ib/mobility.hpp, Membrane::compute_forces_coupled).
-    s.mobility.assemble(s.grid, s.membrane.positions().data(), n, kDelta,
+    s.mobility.assemble(s.grid, s.membrane.positions().data(), n, s.delta,
                         [&](std::size_t node) { return s.fluid.moments(node); });
     s.membrane.compute_forces_coupled(s.mobility.free_velocity(), s.mobility.matrix());
   } else {
@@ -146,16 +149,16 @@ void Simulation2D::step(double shear_factor) {
   double* p[2] = {s.fluid.force(0), s.fluid.force(1)};
   // the force field is zero except where the last step spread: clear only there
   if (s.spread_from.empty()) s.fluid.clear_force();
-  else ib::clear_support<2>(s.grid, s.spread_from.data(), n, p, kDelta);
+  else ib::clear_support<2>(s.grid, s.spread_from.data(), n, p, s.delta);
   s.spread_from = s.membrane.positions();
-  ib::spread<2>(s.grid, s.membrane.positions().data(), s.membrane.forces().data(), n, p, kDelta);  // (21)
+  ib::spread<2>(s.grid, s.membrane.positions().data(), s.membrane.forces().data(), n, p, s.delta);  // (21)
   const double wall = 0.5 * s.units.shear_rate * s.grid.ny * shear_factor;             // k H / 2 (1)
   s.fluid.set_wall_velocity(-wall, wall);
   auto t1 = Clock::now();
   s.fluid.step();
   auto t2 = Clock::now();
   const double* u[2] = {s.fluid.velocity(0), s.fluid.velocity(1)};
-  ib::interpolate<2>(s.grid, u, s.membrane.positions().data(), n, s.U.data(), kDelta);  // (19)
+  ib::interpolate<2>(s.grid, u, s.membrane.positions().data(), n, s.U.data(), s.delta);  // (19)
   ib::advance<2>(s.membrane.positions().data(), s.U.data(), n, 1.0);            // (20)
   // Never index the lattice with a node that is NaN or outside the channel (a blow-up between
   // two outputs): stop moving and let health() end the member.
@@ -323,7 +326,9 @@ std::string run_simulation2d(const Scene& scene, io::MemberWriter& out, const Ru
                                             (scene.conventions.E_b_2d == BendingConvention2d::dissertation ? ", with the dissertation's 2D factor 2 (README Conventions)" : ""));
   }
   out.set_attribute("segments", static_cast<long>(scene.resolution.segments));
-  out.set_attribute("delta", std::string("peskin4: Peskin 4-point (zero first moment), not the cosine (18): README"));
+  out.set_attribute("delta", scene.resolution.delta == ib::Delta::cosine
+                                 ? std::string("cosine: the text's (18) (first moment not zero: docs/guide/model.md)")
+                                 : std::string("peskin4: Peskin 4-point (zero first moment), not the cosine (18): docs/guide/model.md"));
   out.set_attribute("beta_tracked", std::string("node 0, initially at the end of the major axis; wrapped into (-pi, pi]"));
 
   const std::string status = run_output_loop(

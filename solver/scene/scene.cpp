@@ -189,7 +189,7 @@ PhaseSpec read_phase(const json& j, const std::string& source, const std::string
 // Keys the model of the other dimension reads are put back to their defaults, so the
 // canonical scene -- and with it the member id -- does not depend on values this model
 // ignores. 2D (simulation2d.cpp) reads none of C, G, c0, volume_penalty, power_law.n,
-// mesh_level, kernel or snapshots (K > 0 and a delta other than peskin4 are refused
+// mesh_level or snapshots (K > 0 and a delta other than peskin4 or cosine are refused
 // above); 3D reads no segments.
 void ignore_other_dimension(Scene& s) {
   const Scene defaults;
@@ -200,7 +200,6 @@ void ignore_other_dimension(Scene& s) {
     s.volume_penalty = defaults.volume_penalty;
     s.power_law.n = defaults.power_law.n;
     s.resolution.mesh_level = defaults.resolution.mesh_level;
-    s.resolution.delta = defaults.resolution.delta;
     s.output.snapshots = defaults.output.snapshots;
   } else {
     s.resolution.segments = defaults.resolution.segments;
@@ -223,6 +222,17 @@ void read_dim_and_version(ObjectReader& r, const json& j, Scene& s) {
              std::string("\"") + capsule::physics_version + "\" (this solver's) or \"5\"");
     s.physics_version = *version;
   }
+  // The dissertation's numerics (numerics_preset.hpp): defaults only, on this solver's physics.
+  s.numerics = r.choice<Numerics>("numerics", Numerics::toolkit, {Numerics::toolkit, Numerics::dissertation});
+  if (s.numerics == Numerics::dissertation && s.physics_version != PhysicsVersion::current)
+    r.fail("numerics", "the dissertation's numerics are a preset of this solver's physics, not of version 5's",
+           std::string("\"toolkit\" with physics_version \"5\", or physics_version \"") + capsule::physics_version + "\"");
+}
+
+// The defaults of the scene's dimension, physics version and numerics.
+SceneDefaults defaults_for(const Scene& s) {
+  return s.numerics == Numerics::dissertation ? dissertation_scene_defaults(s.dim)
+                                              : scene_defaults(s.physics_version, s.dim);
 }
 
 // The capsule: shape, law and the dimensionless groups (34)-(36), (60)-(67), (84).
@@ -236,7 +246,7 @@ void read_capsule(ObjectReader& r, Scene& s) {
                                   {MembraneLaw::neo_hookean, MembraneLaw::skalak});
   }
   s.C = r.number("C", 15.0, 0.0, 1e3, true);
-  s.Re = r.number("Re", 0.05, 0.0, 10.0, true);
+  s.Re = r.number("Re", s.numerics == Numerics::dissertation ? dissertation_Re(s.dim) : 0.05, 0.0, 10.0, true);
   // With a physical block these four come from it (read_physical); NaN marks "not given".
   const std::optional<double> from_physical =
       r.has("physical") ? std::optional<double>(std::nan("")) : std::nullopt;
@@ -339,15 +349,20 @@ void read_power_law(ObjectReader& r, Scene& s, const SceneDefaults& defaults) {
 void read_conventions(ObjectReader& r, Scene& s) {
   json conv = r.object("conventions", false);
   ObjectReader c(conv, r.source(), r.child_path("conventions"), {"sls_viscosity", "E_b_2d", "biconcave_2d"});
-  s.conventions.sls_viscosity = c.choice<SlsViscosity>("sls_viscosity", SlsViscosity::physical,
-                                           {SlsViscosity::physical, SlsViscosity::dissertation});
-  s.conventions.E_b_2d = c.choice<BendingConvention2d>("E_b_2d", BendingConvention2d::dimensionless,
-                                           {BendingConvention2d::dimensionless, BendingConvention2d::dissertation});
+  // Under the dissertation's numerics the text's readings are the defaults of the dimension they apply to.
+  const bool text = s.numerics == Numerics::dissertation;
+  s.conventions.sls_viscosity = c.choice<SlsViscosity>(
+      "sls_viscosity", text && s.dim == 3 ? SlsViscosity::dissertation : SlsViscosity::physical,
+      {SlsViscosity::physical, SlsViscosity::dissertation});
+  s.conventions.E_b_2d = c.choice<BendingConvention2d>(
+      "E_b_2d", text && s.dim == 2 ? BendingConvention2d::dissertation : BendingConvention2d::dimensionless,
+      {BendingConvention2d::dimensionless, BendingConvention2d::dissertation});
   if (s.dim == 2 && s.conventions.sls_viscosity != SlsViscosity::physical)
     c.fail("sls_viscosity", "the standard linear solid is the 3D membrane's", "\"physical\" in 2D");
   if (s.dim == 3 && s.conventions.E_b_2d != BendingConvention2d::dimensionless)
     c.fail("E_b_2d", "the 2D bending convention does not apply to a 3D scene", "\"dimensionless\" in 3D");
-  s.conventions.biconcave_2d = c.choice<BiconcaveSize2d>("biconcave_2d", BiconcaveSize2d::equivalent,
+  s.conventions.biconcave_2d = c.choice<BiconcaveSize2d>(
+      "biconcave_2d", text && s.dim == 2 && s.shape == Shape::biconcave ? BiconcaveSize2d::dissertation : BiconcaveSize2d::equivalent,
                                              {BiconcaveSize2d::equivalent, BiconcaveSize2d::dissertation});
   if (s.conventions.biconcave_2d != BiconcaveSize2d::equivalent && (s.dim != 2 || s.shape != Shape::biconcave))
     c.fail("biconcave_2d", "the size reading of (24)-(25) applies to the 2D biconcave capsule only",
@@ -378,9 +393,10 @@ void read_delta_and_update(ObjectReader& q, int dim, Scene::Resolution& res, con
   // stresslet's marker inset it has the smaller finite-Ca error of the two measured deltas at
   // 27 nodes a stencil instead of 64 (docs/findings/immersed_boundary_error_budget.md).
   res.delta = q.choice<ib::Delta>("kernel", defaults.delta, {peskin4, roma3, linear2, cosine, keys4});
-  // The 2D driver's implicit Kelvin-Voigt step uses the self-mobility of peskin4 (simulation2d.cpp).
-  if (dim == 2 && res.delta != peskin4)
-    q.fail("kernel", "kernel \"" + choice_name(res.delta) + "\" is 3D only", "\"peskin4\" in 2D");
+  // The 2D driver's approximate Kelvin-Voigt step uses the self-mobility sum phi^2 = (3/8)^2 at a
+  // node, which peskin4 and the text's cosine (18) share (simulation2d.cpp); the others are 3D only.
+  if (dim == 2 && res.delta != peskin4 && res.delta != cosine)
+    q.fail("kernel", "kernel \"" + choice_name(res.delta) + "\" is 3D only", "\"peskin4\" or \"cosine\" in 2D");
   // 3D single by default (campaigns/precision_*.json: steady D_xy and fitted times within 1e-4
   // relative of double, the fluid about 2x faster); 2D double (cheap, its campaigns ran so).
   res.precision = q.choice<lbm::Precision>("precision", defaults.precision,
@@ -493,12 +509,12 @@ void read_output(ObjectReader& r, Scene::Output& output) {
 
 Scene Scene::from_json(const json& j, const std::string& source) {
   ObjectReader r(j, source, "",
-                 {"dim", "physics_version", "shape", "law", "C", "Re", "Ca", "E_b", "V", "eta", "G", "c0",
+                 {"dim", "physics_version", "numerics", "shape", "law", "C", "Re", "Ca", "E_b", "V", "eta", "G", "c0",
                   "reference_case", "volume_penalty", "power_law", "conventions", "resolution", "protocol", "output",
                   "physical"});
   Scene s;
   read_dim_and_version(r, j, s);
-  const SceneDefaults defaults = scene_defaults(s.physics_version, s.dim);
+  const SceneDefaults defaults = defaults_for(s);
   read_capsule(r, s);
   read_conventions(r, s);
   read_physical(r, s);
@@ -639,6 +655,9 @@ json Scene::to_json() const {
   // The member id hashes the scene without this key and with the version after it
   // (study/campaign/member_id.cpp); it is here so that the solver runs what study planned.
   j["physics_version"] = choice_name(physics_version);
+  // Written only under the preset, so the ids of the toolkit's scenes stay; the preset's values
+  // are in the keys above as well, and the name says which defaults they came from.
+  if (numerics != Numerics::toolkit) j["numerics"] = choice_name(numerics);
   return j;
 }
 

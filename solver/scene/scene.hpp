@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "solver/scene/choices.hpp"
+#include "solver/scene/numerics_preset.hpp"
 #include "solver/scene/physical_cell.hpp"
 #include "solver/scene/scene_conventions.hpp"
 #include "solver/scene/scene_output.hpp"
@@ -37,6 +38,8 @@ struct Scene {
   // The physics the scene runs (solver/scene/version.hpp): this solver's, or version 5, whose
   // defaults (scene_defaults) and canonical text keep a campaign run before version 6 as it was.
   PhysicsVersion physics_version = PhysicsVersion::current;
+  // "dissertation": the defaults of the text's numerics (solver/scene/numerics_preset.hpp).
+  Numerics numerics = Numerics::toolkit;
   Shape shape = Shape::circle;           // 2D: circle | biconcave; 3D: sphere | biconcave
   MembraneLaw law = MembraneLaw::hooke;  // 2D: hooke; 3D: neo-hookean | skalak
   double C = 15;               // Skalak area-dilation constant (60)-(61)
