@@ -29,6 +29,9 @@ struct DissertationSummary {
   int linked_figures = 0;  // the toolkit's figures THESIS.md links (figure_index.hpp), all shipped
   int rows_converged = 0, rows_not_converged = 0, rows_one_level = 0, rows_not_judged = 0;  // claim rows (Levels)
   int text_passes = 0, text_fails = 0, text_no_numbers = 0;  // claims whose rule the text's own numbers pass (claim_text_passes)
+  // Claims that differ, run again at the text's settings (emulation.hpp): the text's numbers come
+  // back; still differ; cannot tell; the emulation campaign not shipped
+  int emulation_text_numerics = 0, emulation_model = 0, emulation_cannot_tell = 0, emulation_not_run = 0;
 };
 
 // The document; `results_label` is how it names the results folder (as given on the command line),

@@ -123,7 +123,8 @@ std::string resolve_member_file(const std::string& campaign_root, const std::str
   return fs::exists(moved) ? moved.string() : "";
 }
 
-DissertationResults::DissertationResults(std::string results_dir, int level) : dir_(std::move(results_dir)), level_(level) {}
+DissertationResults::DissertationResults(std::string results_dir, int level, std::string campaign_prefix)
+    : dir_(std::move(results_dir)), level_(level), prefix_(std::move(campaign_prefix)) {}
 
 std::set<std::string> DissertationResults::take_campaigns_read() const {
   std::set<std::string> out;
@@ -135,12 +136,12 @@ const DissertationCampaign& DissertationResults::campaign(const std::string& nam
   read_.insert(name);
   if (const auto it = campaigns_.find(name); it != campaigns_.end()) return it->second;
   DissertationCampaign c;
-  c.name = name;
-  const fs::path root = fs::path(dir_) / name;
+  c.name = prefix_ + name;
+  const fs::path root = fs::path(dir_) / c.name;
   const fs::path path = root / "report" / "fits.json";
   std::ifstream f(path);
   if (!f) {
-    c.missing = "campaign " + name + " not run (no " + path.string() + ")";
+    c.missing = "campaign " + c.name + " not run (no " + path.string() + ")";
     return campaigns_.emplace(name, std::move(c)).first->second;
   }
   try {

@@ -54,7 +54,9 @@ class DissertationResults {
  public:
   // level 0: each physical point judged at its finest shipped level of a ladder (and each bilinear
   // fit at its finest); level 1: at the next coarser level where the point has one, else its only.
-  explicit DissertationResults(std::string results_dir, int level = 0);
+  // campaign_prefix: read campaign X from <results_dir>/<prefix>X (the emulation campaigns,
+  // emulation_X, run with the dissertation's numerics: analysis/dissertation/emulation.hpp).
+  explicit DissertationResults(std::string results_dir, int level = 0, std::string campaign_prefix = "");
   const std::string& results_dir() const { return dir_; }
   int level() const { return level_; }
   // Loaded on first use and kept. Throws std::runtime_error for a fits.json that is not valid JSON.
@@ -70,6 +72,7 @@ class DissertationResults {
  private:
   std::string dir_;
   int level_ = 0;
+  std::string prefix_;
   mutable std::map<std::string, DissertationCampaign> campaigns_;
   mutable std::set<std::string> read_;
 };
