@@ -20,6 +20,14 @@ const char* emulation_reason_text(EmulationReason r) {
   return "";
 }
 
+const std::vector<EmulationSwitch>& emulation_switches() {
+  static const std::vector<EmulationSwitch> s = {{"Re", "Re = 0.05"},
+                                                 {"kernel", "resolution.kernel = peskin4"},
+                                                 {"E_b_2d", "conventions.E_b_2d = dimensionless"},
+                                                 {"biconcave_2d", "conventions.biconcave_2d = equivalent"}};
+  return s;
+}
+
 namespace {
 
 inline constexpr std::size_t k_cell = 160;  // a cell's characters; the whole text is in the claim's section
@@ -86,6 +94,29 @@ Table table2_emulation_table(const std::vector<Table2RowComparison>& toolkit, co
   return t;
 }
 
+// The rows judged at the text's settings with some switch shipped: the verdict as each item alone
+// goes back to the toolkit's value ("" when no row has any).
+std::string switch_table_markdown(const std::vector<EmulationRow>& rows) {
+  Table t;
+  t.header = {"claim", "at the text's settings"};
+  for (const auto& s : emulation_switches()) t.header.push_back("with " + s.item);
+  for (const auto& r : rows) {
+    bool any = false;
+    for (const auto& sw : r.switched) any = any || sw.measured.find(" not run (no ") == std::string::npos;
+    if (!any || r.reason == EmulationReason::not_run) continue;
+    std::vector<std::string> row = {anchor_link(r.toolkit.key, claim_anchor(r.toolkit.key)),
+                                    std::string(verdict_text(r.emulated.verdict)) + ": " + clip_text(r.emulated.measured, 80)};
+    for (const auto& sw : r.switched)
+      row.push_back(sw.measured.find(" not run (no ") != std::string::npos
+                        ? "not run"
+                        : std::string(verdict_text(sw.verdict)) + ": " + clip_text(sw.measured, 80));
+    t.rows.push_back(row);
+  }
+  if (t.rows.empty()) return "";
+  return "\nWhich item moves a claim: the same rule with one item of the preset switched back to the toolkit's value "
+         "(campaigns/emulation/switches/, the 2D campaigns of the claims with no measured cause):\n\n" + t.to_markdown();
+}
+
 }  // namespace
 
 std::vector<EmulationRow> emulation_rows(const std::vector<ClaimResult>& toolkit, const std::vector<ClaimResult>& emulated,
@@ -99,6 +130,7 @@ std::vector<EmulationRow> emulation_rows(const std::vector<ClaimResult>& toolkit
       throw std::logic_error("emulation_rows: row " + std::to_string(i) + " is " + toolkit[i].key + " and " + emulated[i].key);
     if (toolkit[i].verdict != Verdict::differs) continue;
     EmulationRow r;
+    r.index = i;
     r.toolkit = toolkit[i];
     r.emulated = emulated[i];
     r.reason = reason_of(emulated[i], reads_shipped(toolkit[i], shipped_campaigns));
@@ -106,6 +138,14 @@ std::vector<EmulationRow> emulation_rows(const std::vector<ClaimResult>& toolkit
     rows.push_back(std::move(r));
   }
   return rows;
+}
+
+void attach_switch(std::vector<EmulationRow>& rows, const std::vector<ClaimResult>& switched_rows) {
+  for (auto& r : rows) {
+    if (r.index >= switched_rows.size() || switched_rows[r.index].key != r.toolkit.key)
+      throw std::logic_error("attach_switch: the switched rows are not the toolkit's rules");
+    r.switched.push_back(switched_rows[r.index]);
+  }
 }
 
 std::vector<std::pair<std::string, EmulationReason>> claim_emulation_reasons(const std::vector<EmulationRow>& rows) {
@@ -159,6 +199,7 @@ std::string emulation_section_markdown(const std::vector<EmulationRow>& rows,
   md += t.to_markdown() + "\n";
   md += "In one sentence each:\n\n";
   for (const auto& r : rows) md += "- " + r.sentence + "\n";
+  md += switch_table_markdown(rows);
   md += "\nTable 2 at the text's settings (the bilinear fits of `emulation_ch5_bilinear_*`, a = 10, one level) beside the "
         "toolkit's finest level:\n\n";
   md += table2_emulation_table(toolkit_table2, emulated_table2).to_markdown() + "\n";

@@ -24,11 +24,23 @@ inline constexpr const char* k_emulation_prefix = "emulation_";
 enum class EmulationReason { text_numerics, model, cannot_tell, not_run };
 const char* emulation_reason_text(EmulationReason r);  // "the text's numerics", "the model", "cannot tell", "not run"
 
+// One item of the preset switched back to the toolkit's value (scripts/emulation-campaigns writes
+// these campaigns, emulation_<label>_<campaign>, for the 2D campaigns of the unexplained claims).
+struct EmulationSwitch {
+  std::string label;  // the campaign prefix is emulation_<label>_
+  std::string item;   // "resolution.kernel = peskin4"
+};
+const std::vector<EmulationSwitch>& emulation_switches();
+
 struct EmulationRow {
-  ClaimResult toolkit;   // the toolkit's row (converged policy of evaluate_claims_at_two_levels)
-  ClaimResult emulated;  // the same rule on the emulation campaigns
+  std::size_t index = 0;  // the row's place in evaluate_claims' list
+  ClaimResult toolkit;    // the toolkit's row (converged policy of evaluate_claims_at_two_levels)
+  ClaimResult emulated;   // the same rule on the emulation campaigns
   EmulationReason reason = EmulationReason::not_run;
-  std::string sentence;  // one generated sentence: what ran, what it gave, the reason
+  std::string sentence;   // one generated sentence: what ran, what it gave, the reason
+  // Per switch (emulation_switches' order): the same rule with that item switched back; verdict
+  // cannot tell naming the missing campaign where it is not shipped.
+  std::vector<ClaimResult> switched;
 };
 
 // The rows of `toolkit` that differ, each with the row of `emulated` at the same place (both from
@@ -36,6 +48,10 @@ struct EmulationRow {
 // names (its `campaign`) include a shipped one. Throws std::logic_error when the lists do not match.
 std::vector<EmulationRow> emulation_rows(const std::vector<ClaimResult>& toolkit, const std::vector<ClaimResult>& emulated,
                                          const std::vector<std::string>& shipped_campaigns);
+
+// Adds to each row the row at its index of `switched_rows` (evaluate_claims on the campaigns of
+// switch number `k`); rows are added in switch order. Throws std::logic_error on a size mismatch.
+void attach_switch(std::vector<EmulationRow>& rows, const std::vector<ClaimResult>& switched_rows);
 
 // One reason per claim (key) from its rows: the model when some row is, else the text's numerics
 // when some row is, else cannot tell when some row is, else not run.

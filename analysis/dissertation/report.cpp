@@ -242,7 +242,10 @@ std::string dissertation_markdown(const DissertationResults& results, const std:
   std::vector<std::string> shipped;
   for (const auto& name : dissertation_campaigns())
     if (emulated.campaign(name).found) shipped.push_back(name);
-  const auto emulation = emulation_rows(claims, evaluate_claims(emulated), shipped);
+  auto emulation = emulation_rows(claims, evaluate_claims(emulated), shipped);
+  for (const auto& sw : emulation_switches())
+    attach_switch(emulation, evaluate_claims(DissertationResults(results.results_dir(), 0,
+                                                                 std::string(k_emulation_prefix) + sw.label + "_")));
   const EmulationCounts emulation_counts = count_emulation(emulation);
   s.emulation_text_numerics = emulation_counts.text_numerics;
   s.emulation_model = emulation_counts.model;

@@ -93,6 +93,32 @@ TEST_CASE("Third column: THESIS.md counts the reasons on its first screen and li
   CHECK(md.find("| claim | the text | at the text's settings | the toolkit converged | reason |") != std::string::npos);
   CHECK(md.find("| Table 2 row | coefficient | the text | at the text's settings | the toolkit (finest level) |") !=
         std::string::npos);
+  // No switch campaign shipped: no table of switched items.
+  CHECK(md.find("Which item moves a claim") == std::string::npos);
+}
+
+TEST_CASE("Third column: an item switched back to the toolkit's value, one at a time", "[analysis][dissertation]") {
+  TempDir tmp("dissertation_emulation_switch");
+  write_ch3_ca(tmp, "ch3_ca", flat);
+  write_ch3_ca(tmp, "emulation_ch3_ca", proportional);     // the text's numbers come back at its settings
+  write_ch3_ca(tmp, "emulation_kernel_ch3_ca", flat);      // and go away with Peskin's kernel
+  const DissertationResults toolkit(tmp.path.string());
+  auto rows = emulation_rows(evaluate_claims_at_two_levels(toolkit),
+                             evaluate_claims(DissertationResults(tmp.path.string(), 0, k_emulation_prefix)), {"ch3_ca"});
+  for (const auto& sw : emulation_switches())
+    attach_switch(rows, evaluate_claims(DissertationResults(tmp.path.string(), 0, std::string(k_emulation_prefix) + sw.label + "_")));
+  const EmulationRow* r = proportional_2d(rows);
+  REQUIRE(r);
+  REQUIRE(r->switched.size() == emulation_switches().size());
+  for (std::size_t k = 0; k < r->switched.size(); ++k) {
+    INFO(emulation_switches()[k].label);
+    if (emulation_switches()[k].label == "kernel") CHECK(r->switched[k].verdict == Verdict::differs);
+    else CHECK(r->switched[k].measured.find("not run") != std::string::npos);
+  }
+  const std::string md = dissertation_markdown(toolkit, "results");
+  CHECK(md.find("Which item moves a claim") != std::string::npos);
+  CHECK(md.find("with resolution.kernel = peskin4") != std::string::npos);
+  CHECK_THROWS_AS(attach_switch(rows, {}), std::logic_error);
 }
 
 TEST_CASE("Third column: the toolkit's and the emulated rows must be the same rules in the same order", "[analysis][dissertation]") {
