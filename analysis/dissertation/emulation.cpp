@@ -169,7 +169,7 @@ EmulationCounts count_emulation(const std::vector<EmulationRow>& rows) {
 
 std::string emulation_count_line(const EmulationCounts& c) {
   const int total = c.text_numerics + c.model + c.cannot_tell + c.not_run;
-  return "Of the " + std::to_string(total) + " claims that differ, run again at the text's own settings "
+  return "Of the " + std::to_string(total) + " claims that differ (in every row or in some), run again at the text's own settings "
          "([the dissertation's numerics](#the-dissertations-numerics)): " + std::to_string(c.text_numerics) +
          " come back to the text's numbers (the difference is the text's numerics), " + std::to_string(c.model) +
          " still differ (the model), " + std::to_string(c.cannot_tell) + " cannot tell, " + std::to_string(c.not_run) +

@@ -193,7 +193,10 @@ int write_dissertation_comparison(const fs::path& results_dir, const fs::path& o
       << s.claims_in_part << " hold in part, " << s.claims_cannot_tell << " cannot tell (rows: " << s.agrees << " / "
       << s.differs << " / " << s.cannot_tell << ")\nTable 2 coefficients: " << s.coefficients_overlap << " overlap, " << s.coefficients_disjoint
       << " do not, " << s.coefficients_unknown << " cannot tell (statistical intervals); extrapolated over the ladder: "
-      << s.coefficients_extrapolated_pass << " pass the difference test, " << s.coefficients_extrapolated_fail << " do not\n";
+      << s.coefficients_extrapolated_pass << " pass the difference test, " << s.coefficients_extrapolated_fail << " do not\n"
+      << "claims that differ, at the text's settings: " << s.emulation_text_numerics << " the text's numerics, "
+      << s.emulation_model << " the model, " << s.emulation_cannot_tell << " cannot tell, " << s.emulation_not_run
+      << " not run\n";
   return 0;
 }
 
