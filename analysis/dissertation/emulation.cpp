@@ -22,6 +22,7 @@ const char* emulation_reason_text(EmulationReason r) {
 
 const std::vector<EmulationSwitch>& emulation_switches() {
   static const std::vector<EmulationSwitch> s = {{"Re", "Re = 0.05"},
+                                                 {"a10", "resolution.a = 10"},
                                                  {"kernel", "resolution.kernel = peskin4"},
                                                  {"E_b_2d", "conventions.E_b_2d = dimensionless"},
                                                  {"biconcave_2d", "conventions.biconcave_2d = equivalent"}};

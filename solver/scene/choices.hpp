@@ -101,6 +101,7 @@ struct SceneDefaults {
   KelvinVoigtStep kelvin_voigt_step;
   MarkerInsetRule marker_inset_rule;  // before a delta without a measured inset turns it off
   std::vector<double> domain;         // in units of a
+  double a = 10;                      // the capsule's radius in lattice units
 };
 
 inline SceneDefaults scene_defaults(PhysicsVersion version, int dim) {

@@ -1,13 +1,29 @@
 #include "solver/scene/numerics_preset.hpp"
 
+#include <cmath>
+
 namespace capsule {
 
 std::vector<NumericsItem> dissertation_numerics_items(int dim, Shape shape) {
   std::vector<NumericsItem> items;
-  if (dim == 2) {
+  if (dim == 2 && shape == Shape::biconcave) {
     items = {
-        {"Re", "0.025", "Sec. 2: Re = rho k a / mu_a = 0.05 with the 2D a = 0.5 (Sec. 2.4), i.e. k a^2 / nu = 0.025"},
-        {"resolution.a", "10", "Sec. 2: h = dt = dx = 0.05 with a = 0.5"},
+        {"Re", "0.025", "Sec. 2: Re = rho k a / mu_a = 0.05 with the printed a = 0.5 (Sec. 2.4), i.e. k a^2 / nu = 0.025"},
+        {"resolution.a", "10", "Sec. 2, 2.4: h = dt = dx = 0.05 with the printed a = 0.5"},
+        {"conventions.E_b_2d", "dissertation", "(35) with the printed a = 0.5: E_B = 2 E_b a^2 E_s"},
+        {"conventions.biconcave_2d", "dissertation", "(24)-(25) drawn with the printed a = 0.5 (equivalent radius 0.740 a)"},
+    };
+  } else if (dim == 2) {
+    items = {
+        {"Re", "0.05", "Sec. 2: Re = rho k a / mu_a = 0.05 with the circle's radius a = 1, i.e. k a^2 / nu = 0.05"},
+        {"resolution.a", "20",
+         "Sec. 2: h = dt = dx = 0.05 with the circle's radius a = 1 (not printed; a = 0.5, 10 lattice units, makes the "
+         "cosine delta stiffen a bending circle several times over: probe_cosine_lattice_2d)"},
+        {"conventions.E_b_2d", "dimensionless", "(35) with a = 1: E_B = E_b a^2 E_s"},
+    };
+  }
+  if (dim == 2) {
+    const std::vector<NumericsItem> common = {
         {"resolution.domain", "[16, 12]", "Sec. 2: [0, 16a] x [0, 12a]"},
         {"resolution.segments", "140", "Sec. 2.4: 140 line segments, equal at start"},
         {"resolution.kernel", "cosine", "(17)-(18): the cosine delta"},
@@ -15,11 +31,8 @@ std::vector<NumericsItem> dissertation_numerics_items(int dim, Shape shape) {
         {"resolution.membrane_update", "euler", "(20): forward Euler with the interpolated velocity (19)"},
         {"resolution.collision", "mrt", "(6)-(10): the D2Q9 MRT rates (s_eps: see what is not emulated)"},
         {"resolution.precision", "double", "not stated; double, the toolkit's 2D default"},
-        {"conventions.E_b_2d", "dissertation", "(35) in the text's 2D units (a = 0.5): E_B = 2 E_b a^2 E_s"},
     };
-    if (shape == Shape::biconcave)
-      items.push_back({"conventions.biconcave_2d", "dissertation",
-                       "(24)-(25) drawn with the printed a = 0.5 (equivalent radius 0.740 a)"});
+    items.insert(items.end(), common.begin(), common.end());
   } else {
     items = {
         {"Re", "0.05", "Sec. 2: Re = rho k a / mu_a = 0.05 with a = 1 (Sec. 2.6)"},
@@ -71,8 +84,9 @@ std::vector<NumericsGap> dissertation_numerics_gaps(int dim) {
   return gaps;
 }
 
-SceneDefaults dissertation_scene_defaults(int dim) {
+SceneDefaults dissertation_scene_defaults(int dim, Shape shape) {
   SceneDefaults d = scene_defaults(PhysicsVersion::current, dim);
+  d.a = dissertation_lattice_a(dim, shape);
   d.delta = ib::Delta::cosine;
   d.collision = lbm::CollisionModel::mrt;
   d.precision = lbm::Precision::double_precision;
@@ -81,7 +95,14 @@ SceneDefaults dissertation_scene_defaults(int dim) {
   return d;
 }
 
-double dissertation_Re(int dim) { return dim == 2 ? 0.025 : 0.05; }
+double dissertation_radius(int dim, Shape shape) { return dim == 2 && shape == Shape::biconcave ? 0.5 : 1.0; }
+
+double dissertation_lattice_a(int dim, Shape shape) {
+  const double h = dim == 2 ? 0.05 : 0.1;  // Sec. 2
+  return std::round(dissertation_radius(dim, shape) / h);
+}
+
+double dissertation_Re(int dim, Shape shape) { return 0.05 * dissertation_radius(dim, shape); }
 
 std::vector<std::string> numerics_item_lines(int dim, Shape shape) {
   std::vector<std::string> lines;

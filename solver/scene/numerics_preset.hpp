@@ -41,12 +41,22 @@ std::vector<NumericsGap> dissertation_numerics_gaps(int dim);
 
 // The defaults a scene of this dimension gets under the preset: the version-6 defaults with the
 // text's delta, rates, precision, power-law model and marker inset.
-SceneDefaults dissertation_scene_defaults(int dim);
+SceneDefaults dissertation_scene_defaults(int dim, Shape shape);
+
+// The text's capsule radius in its units: 0.5 for the 2D biconcave capsule (Sec. 2.4, printed),
+// 1 for the sphere (Sec. 2.6, printed) and the 2D circle (not printed: the only reading under
+// which the text's cosine delta (18) gives back its own 2D validation, probe_cosine_lattice_2d;
+// docs/guide/dissertation_numerics.md "The 2D lattice").
+double dissertation_radius(int dim, Shape shape);
+
+// The lattice radius a = radius / h (Sec. 2: h = 0.05 in 2D, 0.1 in 3D): 2D circle 20, 2D
+// biconcave 10, 3D 10.
+double dissertation_lattice_a(int dim, Shape shape);
 
 // The text's Reynolds number rho k a / mu_a = 0.05 (Sec. 2) in the toolkit's k a^2 / nu: the
-// text's lengths are in units where a = 0.5 in 2D (Sec. 2.4) and a = 1 in 3D (Sec. 2.6), so
-// k a^2 / nu = 0.05 a_text: 0.025 in 2D, 0.05 in 3D.
-double dissertation_Re(int dim);
+// text's lengths are in its own units, so k a^2 / nu = 0.05 times its radius: 0.025 for the 2D
+// biconcave capsule, 0.05 for the circle and in 3D.
+double dissertation_Re(int dim, Shape shape);
 
 // The items and gaps as lines "key = value: source" / "part: choice (why)", for the member file.
 std::vector<std::string> numerics_item_lines(int dim, Shape shape);

@@ -231,7 +231,7 @@ void read_dim_and_version(ObjectReader& r, const json& j, Scene& s) {
 
 // The defaults of the scene's dimension, physics version and numerics.
 SceneDefaults defaults_for(const Scene& s) {
-  return s.numerics == Numerics::dissertation ? dissertation_scene_defaults(s.dim)
+  return s.numerics == Numerics::dissertation ? dissertation_scene_defaults(s.dim, s.shape)
                                               : scene_defaults(s.physics_version, s.dim);
 }
 
@@ -246,7 +246,7 @@ void read_capsule(ObjectReader& r, Scene& s) {
                                   {MembraneLaw::neo_hookean, MembraneLaw::skalak});
   }
   s.C = r.number("C", 15.0, 0.0, 1e3, true);
-  s.Re = r.number("Re", s.numerics == Numerics::dissertation ? dissertation_Re(s.dim) : 0.05, 0.0, 10.0, true);
+  s.Re = r.number("Re", s.numerics == Numerics::dissertation ? dissertation_Re(s.dim, s.shape) : 0.05, 0.0, 10.0, true);
   // With a physical block these four come from it (read_physical); NaN marks "not given".
   const std::optional<double> from_physical =
       r.has("physical") ? std::optional<double>(std::nan("")) : std::nullopt;
@@ -355,7 +355,8 @@ void read_conventions(ObjectReader& r, Scene& s) {
       "sls_viscosity", text && s.dim == 3 ? SlsViscosity::dissertation : SlsViscosity::physical,
       {SlsViscosity::physical, SlsViscosity::dissertation});
   s.conventions.E_b_2d = c.choice<BendingConvention2d>(
-      "E_b_2d", text && s.dim == 2 ? BendingConvention2d::dissertation : BendingConvention2d::dimensionless,
+      "E_b_2d", text && s.dim == 2 && s.shape == Shape::biconcave ? BendingConvention2d::dissertation
+                                                                 : BendingConvention2d::dimensionless,
       {BendingConvention2d::dimensionless, BendingConvention2d::dissertation});
   if (s.dim == 2 && s.conventions.sls_viscosity != SlsViscosity::physical)
     c.fail("sls_viscosity", "the standard linear solid is the 3D membrane's", "\"physical\" in 2D");
@@ -372,7 +373,7 @@ void read_conventions(ObjectReader& r, Scene& s) {
 
 // resolution: the lattice (a, domain, membrane discretisation, tau).
 void read_lattice(ObjectReader& q, const json& block, int dim, Scene::Resolution& res, const SceneDefaults& defaults) {
-  res.a = q.number("a", 10.0, 2.0, 200.0);
+  res.a = q.number("a", defaults.a, 2.0, 200.0);
   res.domain = q.numbers("domain", defaults.domain, 3.0, 100.0, dim, dim);
   res.segments = q.integer("segments", 140, 16, 100000);
   res.mesh_level = q.integer("mesh_level", 4, 0, 6);
@@ -514,8 +515,8 @@ Scene Scene::from_json(const json& j, const std::string& source) {
                   "physical"});
   Scene s;
   read_dim_and_version(r, j, s);
-  const SceneDefaults defaults = defaults_for(s);
   read_capsule(r, s);
+  const SceneDefaults defaults = defaults_for(s);  // the preset's depend on the shape
   read_conventions(r, s);
   read_physical(r, s);
   read_power_law(r, s, defaults);

@@ -76,10 +76,20 @@ TEST_CASE("numerics dissertation: every listed item is the value the scene runs"
   CHECK_FALSE(has(capsule::dissertation_numerics_items(2, capsule::Shape::circle), "conventions.biconcave_2d"));
 }
 
-TEST_CASE("numerics dissertation: the text's Reynolds number in the toolkit's k a^2 / nu", "[scene][numerics]") {
-  // rho k a / mu_a = 0.05 with the text's a = 0.5 (2D) and a = 1 (3D).
-  CHECK(Scene::from_json(scene(2, "circle"), "t.json").Re == 0.025);
-  CHECK(Scene::from_json(scene(3, "sphere"), "t.json").Re == 0.05);
+TEST_CASE("numerics dissertation: the text's radius sets the lattice and the Reynolds number in k a^2 / nu", "[scene][numerics]") {
+  // rho k a / mu_a = 0.05 with the printed a = 0.5 of the 2D biconcave capsule, and a = 1 for the
+  // circle and the sphere; h = 0.05 (2D), 0.1 (3D).
+  const Scene circle = Scene::from_json(scene(2, "circle"), "t.json");
+  const Scene biconcave = Scene::from_json(scene(2, "biconcave"), "t.json");
+  const Scene sphere = Scene::from_json(scene(3, "sphere"), "t.json");
+  CHECK(circle.Re == 0.05);
+  CHECK(circle.resolution.a == 20);
+  CHECK(capsule::choice_name(circle.conventions.E_b_2d) == "dimensionless");
+  CHECK(biconcave.Re == 0.025);
+  CHECK(biconcave.resolution.a == 10);
+  CHECK(capsule::choice_name(biconcave.conventions.E_b_2d) == "dissertation");
+  CHECK(sphere.Re == 0.05);
+  CHECK(sphere.resolution.a == 10);
 }
 
 TEST_CASE("numerics dissertation: a key the scene gives wins over the preset", "[scene][numerics]") {
