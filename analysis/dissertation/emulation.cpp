@@ -72,6 +72,13 @@ int rank(EmulationReason r) {
   return 0;
 }
 
+// "verdict: measured", the verdict once where the measured text opens with it already.
+std::string verdict_cell(const ClaimResult& row, std::size_t limit) {
+  const std::string verdict = verdict_text(row.verdict);
+  if (row.measured.rfind(verdict, 0) == 0) return clip_text(row.measured, limit);
+  return verdict + ": " + clip_text(row.measured, limit);
+}
+
 std::string coefficient_cell(const Table2RowComparison& row, std::size_t k) {
   if (!row.found) return "not run";
   if (k >= row.coefficients.size() || !row.coefficients[k].measured) return "no fit";
@@ -106,11 +113,11 @@ std::string switch_table_markdown(const std::vector<EmulationRow>& rows) {
     for (const auto& sw : r.switched) any = any || sw.measured.find(" not run (no ") == std::string::npos;
     if (!any || r.reason == EmulationReason::not_run) continue;
     std::vector<std::string> row = {anchor_link(r.toolkit.key, claim_anchor(r.toolkit.key)),
-                                    std::string(verdict_text(r.emulated.verdict)) + ": " + clip_text(r.emulated.measured, 80)};
+                                    verdict_cell(r.emulated, 80)};
     for (const auto& sw : r.switched)
       row.push_back(sw.measured.find(" not run (no ") != std::string::npos
                         ? "not run"
-                        : std::string(verdict_text(sw.verdict)) + ": " + clip_text(sw.measured, 80));
+                        : verdict_cell(sw, 80));
     t.rows.push_back(row);
   }
   if (t.rows.empty()) return "";
@@ -183,7 +190,7 @@ std::string emulation_section_markdown(const std::vector<EmulationRow>& rows,
   std::string md = "<a id=\"the-dissertations-numerics\"></a>\n\n## The dissertation's numerics\n\n";
   md += "Each claim row that differs, with the same rule run on the emulation campaigns: the dissertation's campaigns "
         "with `\"numerics\": \"dissertation\"` (the text's cosine delta, MRT rates, markers on the membrane, Reynolds "
-        "number, one resolution a = 10 and its printed readings; what is not emulated and why: "
+        "number, one resolution (a = 10; the 2D circle a = 20) and its printed readings; what is not emulated and why: "
         "docs/guide/dissertation_numerics.md), shipped in `emulation_<campaign>/`. *the text's numerics*: at the text's "
         "settings the rule agrees, converged it differs; *the model*: at the text's settings it still differs; *not run*: "
         "the emulation campaign is not shipped (campaigns/emulation/, `study run` it).\n\n";
@@ -193,9 +200,8 @@ std::string emulation_section_markdown(const std::vector<EmulationRow>& rows,
   for (const auto& r : rows) {
     const std::string text = r.toolkit.text_numbers.empty() ? r.toolkit.statement : r.toolkit.text_numbers;
     t.rows.push_back({anchor_link(r.toolkit.key, claim_anchor(r.toolkit.key)), clip_text(text, k_cell),
-                      std::string(verdict_text(r.emulated.verdict)) + ": " + clip_text(r.emulated.measured, k_cell),
-                      std::string(verdict_text(r.toolkit.verdict)) + ": " + clip_text(r.toolkit.measured, k_cell),
-                      emulation_reason_text(r.reason)});
+                      r.reason == EmulationReason::not_run ? std::string("not run") : verdict_cell(r.emulated, k_cell),
+                      verdict_cell(r.toolkit, k_cell), emulation_reason_text(r.reason)});
   }
   md += t.to_markdown() + "\n";
   md += "In one sentence each:\n\n";
