@@ -21,12 +21,20 @@ void validate(const RigidCircleOptions& o) {
   require(o.segments >= 16 && o.segments <= 100000, "segments must be in [16, 100000], got " + std::to_string(o.segments));
   for (double d : o.domain) require(d >= 3 && d <= 100, "each domain side must be in [3, 100] a, got " + std::to_string(d));
   validate_tethered_options(o, "rigid circle");
+  require(o.refine_margin >= 0 && o.refine_margin <= 20, "refine_margin must be in [0, 20] coarse cells, got " +
+                                                             std::to_string(o.refine_margin));
+  if (o.refine_margin > 0)
+    for (int d = 0; d < 2; ++d)
+      require(std::lround(o.domain[d] * o.a) % 2 == 0,
+              "a refined channel needs an even number of fine nodes per axis, domain x a gives " +
+                  std::to_string(std::lround(o.domain[d] * o.a)));
 }
 
 RigidShellResult run_rigid_circle(const RigidCircleOptions& o) {
   validate(o);
   const double a = o.a, r_m = o.marker_radius > 0 ? o.marker_radius : o.a;
   TetheredMarkers s = tethered_markers_from(o, 2, "rigid circle");
+  s.refine_margin = o.refine_margin;
   RigidShellResult result;
   result.grid[0] = s.grid[0] = static_cast<int>(std::lround(o.domain[0] * a));
   result.grid[1] = s.grid[1] = static_cast<int>(std::lround(o.domain[1] * a));

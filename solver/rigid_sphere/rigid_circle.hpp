@@ -35,6 +35,10 @@ struct RigidCircleOptions {
   ib::Delta delta = ib::Delta::peskin4;
   lbm::Precision precision = lbm::Precision::double_precision;
   double every = 0.25;           // series interval in kt
+  // > 0: the fluid refined by a factor 2 in a block around the circle, this many coarse cells
+  // wider on each side; a, the domain and tau are then the fine lattice's (the channel's fine
+  // node counts must be even), the markers step on the fine lattice (tethered_markers.hpp).
+  int refine_margin = 0;
 };
 
 // Throws std::invalid_argument naming the option and its allowed range.

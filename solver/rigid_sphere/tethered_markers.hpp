@@ -36,6 +36,10 @@ struct TetheredMarkers {
   ib::Delta delta = ib::Delta::peskin4;
   lbm::Precision precision = lbm::Precision::double_precision;
   std::string name = "rigid shell"; // for the error when the fluid blows up
+  // > 0: the fluid refined by a factor 2 in a block around the anchors, this many coarse cells
+  // wider on each side (solver/lbm/refinement/); the setup above is the fine lattice's (grid,
+  // anchors, nu, k per fine step), the markers step on the fine lattice; leakage is not read.
+  int refine_margin = 0;
 };
 
 // The options both rigid bodies share (RigidShellOptions, RigidCircleOptions), checked with the

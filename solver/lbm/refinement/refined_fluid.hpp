@@ -107,15 +107,33 @@ class RefinedFluid {
   const std::vector<double>& fine_populations() const { return fine_; }
 
   void step() {
+    step([](int) {}, [](int) {});
+  }
+
+  // One coarse step with the immersed boundary on the fine level (the membrane steps at dt/2):
+  // before(sub) runs before the fine collision of sub-step sub = 0, 1 (spread the force into
+  // fine_force there), after(sub) after its streaming (fine_velocity is then that sub-step's
+  // physical velocity at the time level of its force, as Fluid::velocity after a step).
+  template <class Before, class After>
+  void step(Before&& before, After&& after) {
     collide_coarse();
     const double exploded = explode<L>(block_, coarse_.data(), fine_.data());
     for (int sub = 0; sub < 2; ++sub) {
+      before(sub);
       collide_fine();
       stream_fine();
+      after(sub);
     }
     const double coalesced = stream_coarse();
     restore_mass(exploded + coalesced);
   }
+
+  // The fine lattice as the immersed boundary sees it (solver/ib/grid.hpp: node i at i + 1/2, in
+  // fine spacings), and the map of a position in coarse spacings onto it: x_f = 2 (x_c - first),
+  // first the coarse cell of fine index 0 (the ghost layer's). Markers must keep their delta's
+  // support on block cells (the ghost cells' velocity is not collided).
+  std::array<int, 3> fine_grid() const { return {block_.fine_n(0), block_.fine_n(1), D == 3 ? block_.fine_n(2) : 1}; }
+  double to_fine(int a, double x_coarse) const { return 2.0 * (x_coarse - block_.fine_centre({0, 0, 0})[a]) + 0.5; }
 
   // Mass (fine cell volumes) the last step's transfers created before restore_mass removed it.
   double last_transfer_mismatch() const { return last_mismatch_; }
