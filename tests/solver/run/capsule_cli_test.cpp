@@ -154,15 +154,16 @@ TEST_CASE("capsule rigid-circle writes a summary row and a series - bad options 
   const Result r = run_capsule("rigid-circle --a 3 --segments 32 --domain 5 5 --kt 0.1 --every 0.05 -o " + quote(series.string()));
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
-  CHECK(r.output.rfind("a,marker_radius,segments,nx,ny,spin,kernel,precision,kt,torque,", 0) == 0);
-  CHECK(r.output.find("\n3,3,32,15,15,0,peskin4,double,") != std::string::npos);
+  CHECK(r.output.rfind("a,marker_radius,segments,nx,ny,spin,kernel,precision,refine_margin,kt,torque,", 0) == 0);
+  CHECK(r.output.find("\n3,3,32,15,15,0,peskin4,double,0,") != std::string::npos);
   std::ifstream in(series);
   std::string header;
   std::getline(in, header);
   CHECK(header == "kt,torque,stresslet,leakage,lag,slip,slip_rms");
   CHECK(no_temporary_beside(series));
   for (const std::string& args : {std::string("rigid-circle --a 1"), std::string("rigid-circle --segments 8"),
-                                  std::string("rigid-circle --kernel gauss"), std::string("rigid-circle --domain 10 10 8")}) {
+                                  std::string("rigid-circle --kernel gauss"), std::string("rigid-circle --domain 10 10 8"),
+                                  std::string("rigid-circle --refine-margin 21")}) {
     INFO("capsule " << args);
     CHECK(run_capsule(args).exit_code == 2);
   }
