@@ -197,6 +197,7 @@ std::string run_output_loop(Sim& sim, const Scene& scene, Protocol& protocol, io
     for (long i = first_step; i < steps_per_output; ++i) {
       bool healthy = true;
       if constexpr (requires { sim.failure(); }) healthy = sim.failure().empty();
+      if constexpr (requires { sim.stopped(); }) healthy = healthy && sim.stopped().empty();
       if (stop_signal() != 0) {  // a job's time limit, scancel, Ctrl-C: keep the work done so far
         if (!control.restart_path.empty() && healthy) write_restart_point(i);
         throw StoppedBySignal{sim.steps(), stop_signal()};
@@ -216,6 +217,14 @@ std::string run_output_loop(Sim& sim, const Scene& scene, Protocol& protocol, io
     first_step = 0;
     if constexpr (requires { sim.failure(); }) {
       if (!sim.failure().empty()) return unstable(sim.failure());
+    }
+    // A healthy run that cannot go on (the capsule left a refined block): "stopped at kt = X: why".
+    if constexpr (requires { sim.stopped(); }) {
+      if (!sim.stopped().empty()) {
+        std::ostringstream s;
+        s << "stopped at kt = " << sim.kt() << ": " << sim.stopped();
+        return s.str();
+      }
     }
   }
 }

@@ -42,6 +42,7 @@
 #include "solver/ib/support_rows.hpp"
 #include "solver/ib/viscosity_contrast.hpp"
 #include "solver/lbm/fluid.hpp"
+#include "solver/lbm/refinement/refined_fluid.hpp"
 #include <Eigen/Eigenvalues>
 
 #include "solver/membrane3d/curvature.hpp"
@@ -54,6 +55,7 @@
 #include "solver/membrane3d/vtk_writer.hpp"
 #include "solver/run/output_loop.hpp"
 #include "solver/run/protocol.hpp"
+#include "solver/scene/refined_block_extent.hpp"
 #include "solver/scene/units.hpp"
 
 namespace capsule {
@@ -79,16 +81,21 @@ class Simulation3D {
  public:
   explicit Simulation3D(const Scene& s)
       : scene_(s), units_(units_for(s, choose_tau(s))), n_(s.grid()),
-        grid_{n_[0], n_[1], n_[2]}, fluid_(n_[0], n_[1], n_[2], units_.nu, s.resolution.precision) {
+        grid_{n_[0], n_[1], n_[2]}, ib_grid_(grid_) {
     if (s.dim != 3) throw std::invalid_argument("Simulation3D: scene.dim must be 3");
-    fluid_.set_collision(s.resolution.collision);
-    build_membrane();
-    U_.assign(3 * mesh_.vertex_count(), 0.0);
     const double k = units_.shear_rate, H = grid_.ny;
     const double f0 = Protocol(s).shear_factor(0.0);
-    fluid_.initialise_velocity([&](double, double y, double) {
-      return std::array<double, 3>{k * (y - 0.5 * H) * f0, 0.0, 0.0};  // linear Couette flow (1)
-    });
+    if (s.resolution.refine) {
+      make_refined_fluid();
+    } else {
+      fluid_ = std::make_unique<lbm::Fluid<lbm::D3Q19>>(n_[0], n_[1], n_[2], units_.nu, s.resolution.precision);
+      fluid_->set_collision(s.resolution.collision);
+      fluid_->initialise_velocity([&](double, double y, double) {
+        return std::array<double, 3>{k * (y - 0.5 * H) * f0, 0.0, 0.0};  // linear Couette flow (1)
+      });
+    }
+    build_membrane();
+    U_.assign(3 * mesh_.vertex_count(), 0.0);
     // The viscosity field exists only for a contrast (V != 1) or a power-law membrane (K > 0).
     if (s.V != 1.0) contrast_ = std::make_unique<ib::ViscosityContrast<3>>(grid_, units_.nu, units_.nu_inside);
     if (s.power_law.K > 0 && s.power_law.model == PowerLawModel::fluid_shell) {
@@ -111,8 +118,20 @@ class Simulation3D {
   double tau_m() const { return tau_m_; }
   double K_v() const { return K_v_; }
   const m3::Mesh& mesh() const { return mesh_; }
+  // The fluid's steps: the lattice's, or the coarse lattice's under refinement (each two of the
+  // fine lattice, where the membrane steps).
   long steps() const { return steps_; }
-  double kt() const { return steps_ * units_.shear_rate; }
+  long fine_steps() const { return refined_ ? 2 * steps_ : steps_; }
+  // k per fluid step: the lattice's k, or twice the fine lattice's under refinement.
+  double step_shear_rate() const { return refined_ ? 2.0 * units_.shear_rate : units_.shear_rate; }
+  double kt() const { return steps_ * step_shear_rate(); }
+  // Lattice node updates per fluid step (the progress line's MLUPS): every node, or the coarse
+  // lattice's plus twice the fine lattice's under refinement.
+  double node_updates_per_step() const {
+    if (!refined_) return static_cast<double>(grid_.size());
+    return static_cast<double>(refined_->block().coarse_size()) + 2.0 * static_cast<double>(refined_->block().fine_size());
+  }
+  const lbm::refinement::RefinedFluid<lbm::D3Q19>* refined_fluid() const { return refined_.get(); }
   const Timings& timings() const { return timings_; }
   const m3::MembraneTimings& membrane_timings() const { return forces_.timings(); }
   const std::vector<int>& tracked() const { return phase_.vertices(); }
@@ -151,24 +170,25 @@ class Simulation3D {
   }
 
   void step(double shear_factor) {
-    if (!broken_.empty()) return;  // the output loop reports it after this output interval
+    if (!broken_.empty() || !stopped_.empty()) return;  // the output loop reports it after this output interval
+    if (refined_) return step_refined(shear_factor);
     const std::size_t n = mesh_.vertex_count();
     forces_.compute(mesh_, force_);
     if (load_on_) m3::add_pulling_forces(patches_, pull_force_, force_);  // the beads (stretch protocol)
     auto t0 = Clock::now();
-    double* p[3] = {fluid_.force(0), fluid_.force(1), fluid_.force(2)};
+    double* p[3] = {fluid_->force(0), fluid_->force(1), fluid_->force(2)};
     // The force field is zero except where the last step spread: clear only there, then spread
     // (21), both on all threads, bitwise the serial spreading (spreading_box.hpp).
     spreading_.clear_last_and_spread(grid_, positions(), reinterpret_cast<const double*>(force_.data()), n, p, delta_);
     timings_.spreading += std::chrono::duration<double>(Clock::now() - t0).count();
     const double wall = 0.5 * units_.shear_rate * grid_.ny * shear_factor;                  // k H / 2 (1)
-    fluid_.set_wall_velocity(-wall, wall);
-    const double* u[3] = {fluid_.velocity(0), fluid_.velocity(1), fluid_.velocity(2)};
+    fluid_->set_wall_velocity(-wall, wall);
+    const double* u[3] = {fluid_->velocity(0), fluid_->velocity(1), fluid_->velocity(2)};
     // previous_velocity: U^n(X^n), the fluid velocity of the time level of F(X^n) (membrane_update.hpp).
     if (update_ == ib::MembraneUpdate::previous_velocity) ib::interpolate<3>(grid_, u, positions(), n, U_.data(), delta_);
     set_macroscopic_region();
     auto t1 = Clock::now();
-    fluid_.step();
+    fluid_->step();
     auto t2 = Clock::now();
     if (update_ != ib::MembraneUpdate::previous_velocity) ib::interpolate<3>(grid_, u, positions(), n, U_.data(), delta_);  // (19)
     if (update_ == ib::MembraneUpdate::adams_bashforth2) ib::advance_adams_bashforth2<3>(positions(), U_.data(), U_previous_, n, 1.0);
@@ -187,6 +207,9 @@ class Simulation3D {
   // Why step() stopped ("" while it runs): a vertex that is NaN or outside the channel would
   // index the lattice out of bounds in the next spreading.
   const std::string& failure() const { return broken_; }
+  // Why step() stopped although the run is healthy ("" while it runs): the capsule's kernel
+  // support reached the edge of the refined block.
+  const std::string& stopped() const { return stopped_; }
 
   // Stretch protocol: whether the beads pull during the next steps (the output loop sets it).
   void set_load(bool on) { load_on_ = on; }
@@ -202,11 +225,13 @@ class Simulation3D {
     beta = phase_.update(mesh_, d.centroid, d.theta);
     const double a = scene_.resolution.a;
     double umax2 = 0;
-    for (std::size_t i = 0; i < grid_.size(); ++i) {
-      const double s = fluid_.velocity(0)[i] * fluid_.velocity(0)[i] + fluid_.velocity(1)[i] * fluid_.velocity(1)[i] +
-                       fluid_.velocity(2)[i] * fluid_.velocity(2)[i];
-      umax2 = std::max(umax2, s);
-    }
+    if (refined_) umax2 = refined_->max_speed() * refined_->max_speed();
+    else
+      for (std::size_t i = 0; i < grid_.size(); ++i) {
+        const double s = fluid_->velocity(0)[i] * fluid_->velocity(0)[i] + fluid_->velocity(1)[i] * fluid_->velocity(1)[i] +
+                         fluid_->velocity(2)[i] * fluid_->velocity(2)[i];
+        umax2 = std::max(umax2, s);
+      }
     std::map<std::string, double> r = {
         {"kt", kt()},
         {"D_xy", d.D},                                              // inertia ellipsoid (38)
@@ -255,12 +280,22 @@ class Simulation3D {
 
   // Restart points (solver/run/checkpoint.hpp): everything a later step() and row() read.
   void save_state(io::StateArchive& a) const {
-    lbm::Fluid<lbm::D3Q19>::State f;
-    fluid_.export_state(f);
-    a.put("fluid.populations", std::move(f.populations));
-    a.put("fluid.density", std::move(f.density));
-    a.put("fluid.velocity", std::move(f.velocity));
-    a.put("fluid.viscosity", std::move(f.viscosity));
+    if (refined_) {
+      lbm::refinement::RefinedFluid<lbm::D3Q19>::State f;
+      refined_->export_state(f);
+      a.put("refined.coarse_populations", std::move(f.coarse));
+      a.put("refined.fine_populations", std::move(f.fine));
+      a.put("refined.coarse_density", std::move(f.coarse_density));
+      a.put("refined.coarse_velocity", std::move(f.coarse_velocity));
+      a.put("refined.fine_velocity", std::move(f.fine_velocity));
+    } else {
+      lbm::Fluid<lbm::D3Q19>::State f;
+      fluid_->export_state(f);
+      a.put("fluid.populations", std::move(f.populations));
+      a.put("fluid.density", std::move(f.density));
+      a.put("fluid.velocity", std::move(f.velocity));
+      a.put("fluid.viscosity", std::move(f.viscosity));
+    }
     a.put("membrane.x", shape());
     a.put("membrane.sls_memory", forces_.elastic().memory());
     a.put_integer("membrane.sls_started", forces_.elastic().memory_started() ? 1 : 0);
@@ -295,9 +330,16 @@ class Simulation3D {
     const auto& saved = a.doubles("membrane.reference");
     if (saved.size() != reference.size() || !std::equal(saved.begin(), saved.end(), reference.begin()))
       throw std::runtime_error("restart point: the membrane's reference state differs from this build's");
-    lbm::Fluid<lbm::D3Q19>::State f{a.take_doubles("fluid.populations"), a.take_doubles("fluid.density"),
-                                    a.take_doubles("fluid.velocity"), a.take_doubles("fluid.viscosity")};
-    fluid_.import_state(std::move(f));
+    if (refined_) {
+      lbm::refinement::RefinedFluid<lbm::D3Q19>::State f{a.take_doubles("refined.coarse_populations"), a.take_doubles("refined.fine_populations"),
+                                                         a.take_doubles("refined.coarse_density"), a.take_doubles("refined.coarse_velocity"),
+                                                         a.take_doubles("refined.fine_velocity")};
+      refined_->import_state(std::move(f));
+    } else {
+      lbm::Fluid<lbm::D3Q19>::State f{a.take_doubles("fluid.populations"), a.take_doubles("fluid.density"),
+                                      a.take_doubles("fluid.velocity"), a.take_doubles("fluid.viscosity")};
+      fluid_->import_state(std::move(f));
+    }
     const auto& x = a.doubles("membrane.x");
     if (x.size() != 3 * mesh_.x.size()) throw std::runtime_error("restart point: membrane.x does not fit the mesh");
     for (std::size_t v = 0; v < mesh_.x.size(); ++v) mesh_.x[v] = m3::Vec3(x[3 * v], x[3 * v + 1], x[3 * v + 2]);
@@ -322,7 +364,7 @@ class Simulation3D {
       // them (the fluid's viscosity already holds the field's contribution).
       const auto normals = m3::averaged_vertex_normals(mesh_);
       const auto areas = m3::voronoi_areas(mesh_);
-      const double* u[3] = {fluid_.velocity(0), fluid_.velocity(1), fluid_.velocity(2)};
+      const double* u[3] = {fluid_->velocity(0), fluid_->velocity(1), fluid_->velocity(2)};
       power_law_->update(positions(), reinterpret_cast<const double*>(normals.data()), areas.data(),
                          mesh_.vertex_count(), u);
     }
@@ -353,7 +395,106 @@ class Simulation3D {
       std::ostringstream why;
       why << "membrane vertex " << v << " left the fluid (NaN or beyond a wall) at step " << steps_ + 1;
       broken_ = why.str();
+      return;
     }
+    if (refined_) check_inside_block();
+  }
+
+  // Refinement: the fluid of the membrane's time step is the fine lattice's block; a vertex
+  // whose delta would touch a ghost cell (never collided, so its force is lost and its velocity
+  // stale) stops the member. Node i (centre i + 1/2) is touched from x when |i + 1/2 - x| < w/2:
+  // the block's cells 2 .. nf - 3 hold the support for x in [3/2 + w/2, nf - 3/2 - w/2].
+  void check_inside_block() {
+    const auto& b = refined_->block();
+    const double half = 0.5 * ib::delta_width(delta_);
+    static const char* axis[3] = {"x", "y", "z"};
+    for (int v = 0; v < mesh_.vertex_count(); ++v)
+      for (int d = 0; d < 3; ++d) {
+        if (b.spans(d)) continue;
+        const double x = mesh_.x[v][d] + shift_[d];
+        if (x < 1.5 + half || x > b.fine_n(d) - 1.5 - half) {
+          std::ostringstream why;
+          why << "the capsule left the refined block: membrane vertex " << v << "'s kernel reached the block's edge along "
+              << axis[d] << " (resolution.refine.margin " << scene_.resolution.refine->margin
+              << " a is too small for this deformation)";
+          stopped_ = why.str();
+          return;
+        }
+      }
+  }
+
+  // The positions in the fine lattice's frame (RefinedFluid::fine_grid): the domain's fine
+  // spacings shifted by the block's origin.
+  const double* block_frame_positions() {
+    const std::size_t n = mesh_.vertex_count();
+    local_.resize(3 * n);
+    for (std::size_t v = 0; v < n; ++v)
+      for (int d = 0; d < 3; ++d) local_[3 * v + d] = mesh_.x[v][d] + shift_[d];
+    return local_.data();
+  }
+
+  // The refined fluid (resolution.refine, docs/guide/refinement.md "In a scene"): the scene's
+  // lattice is the fine one (a, tau, k and the membrane in its units); the coarse lattice has
+  // half the nodes per axis, half the lattice viscosity and the same lattice velocity.
+  void make_refined_fluid() {
+    const Scene& s = scene_;
+    const RefinedBlockPlan plan = refined_block_extent(s);
+    if (!plan.why.empty()) throw std::invalid_argument("resolution.refine: " + plan.why);
+    const double tau_coarse = 0.5 + 0.5 * (units_.tau - 0.5);
+    if (tau_coarse < 0.505)
+      throw std::invalid_argument("resolution.refine: the coarse lattice's relaxation time " + std::to_string(tau_coarse) +
+                                  " (the fine lattice's " + std::to_string(units_.tau) + ") is below 0.505: give a larger resolution.tau");
+    refined_ = std::make_unique<lbm::refinement::RefinedFluid<lbm::D3Q19>>(n_[0] / 2, n_[1] / 2, n_[2] / 2, 0.5 * units_.nu, plan.extent);
+    refined_->set_collision(s.resolution.collision);
+    const double k = units_.shear_rate, H = grid_.ny, f0 = Protocol(s).shear_factor(0.0);
+    refined_->initialise_velocity([&](double, double y, double) {  // coarse spacings: y_fine = 2 y
+      return std::array<double, 3>{k * (2.0 * y - 0.5 * H) * f0, 0.0, 0.0};  // linear Couette flow (1)
+    });
+    const auto g = refined_->fine_grid();
+    ib_grid_ = ib::Grid{g[0], g[1], g[2]};
+    for (int d = 0; d < 3; ++d) shift_[d] = refined_->to_fine(d, 0.0);
+  }
+
+  // One coarse step of the refined fluid: two membrane steps of the fine lattice's dt, each
+  // spreading before a fine sub-step and moving the membrane after it (RefinedFluid::step), in
+  // the order of step() above.
+  void step_refined(double shear_factor) {
+    const std::size_t n = mesh_.vertex_count();
+    const double wall = 0.5 * units_.shear_rate * grid_.ny * shear_factor;  // k H / 2 (1): the same lattice velocity on both levels
+    refined_->set_wall_velocity(-wall, wall);
+    double* p[3] = {refined_->fine_force(0), refined_->fine_force(1), refined_->fine_force(2)};
+    const double* u[3] = {refined_->fine_velocity(0), refined_->fine_velocity(1), refined_->fine_velocity(2)};
+    const auto start = Clock::now();
+    double hooks = 0;  // seconds in the membrane and coupling, the rest is the fluid's
+    refined_->step(
+        [&](int) {
+          if (!broken_.empty() || !stopped_.empty()) return;
+          const auto c0 = Clock::now();
+          forces_.compute(mesh_, force_);
+          if (load_on_) m3::add_pulling_forces(patches_, pull_force_, force_);
+          const auto t0 = Clock::now();
+          const double* X = block_frame_positions();
+          spreading_.clear_last_and_spread(ib_grid_, X, reinterpret_cast<const double*>(force_.data()), n, p, delta_);
+          const auto t1 = Clock::now();
+          timings_.spreading += std::chrono::duration<double>(t1 - t0).count();
+          if (update_ == ib::MembraneUpdate::previous_velocity) ib::interpolate<3>(ib_grid_, u, X, n, U_.data(), delta_);
+          const auto t2 = Clock::now();
+          timings_.coupling += std::chrono::duration<double>(t2 - t0).count();
+          hooks += std::chrono::duration<double>(t2 - c0).count();
+        },
+        [&](int) {
+          if (!broken_.empty() || !stopped_.empty()) return;
+          const auto t0 = Clock::now();
+          if (update_ != ib::MembraneUpdate::previous_velocity) ib::interpolate<3>(ib_grid_, u, local_.data(), n, U_.data(), delta_);  // (19)
+          if (update_ == ib::MembraneUpdate::adams_bashforth2) ib::advance_adams_bashforth2<3>(positions(), U_.data(), U_previous_, n, 1.0);
+          else ib::advance<3>(positions(), U_.data(), n, 1.0);  // (20)
+          check_positions();
+          const double dt = std::chrono::duration<double>(Clock::now() - t0).count();
+          timings_.coupling += dt;
+          hooks += dt;
+        });
+    timings_.fluid += std::chrono::duration<double>(Clock::now() - start).count() - hooks;
+    ++steps_;
   }
 
   // The fluid writes u, rho and reads the force only on the rows (y, z) the membrane can
@@ -363,13 +504,14 @@ class Simulation3D {
   // < max_speed = 0.2). Everywhere on the step before an output row (max_speed reads it all).
   static constexpr int kRegionMargin = 5;
   void set_macroscopic_region() {
+    if (refined_) return;  // the refined fluid writes u and rho everywhere
     if (full_fields_next_) {
-      fluid_.set_macroscopic_everywhere();
+      fluid_->set_macroscopic_everywhere();
       full_fields_next_ = false;
       return;
     }
     const ib::RowRange r = ib::support_rows(grid_, positions(), mesh_.vertex_count(), kRegionMargin);
-    fluid_.set_macroscopic_region({{r.y_begin, r.y_end, r.z_begin, r.z_end}});
+    fluid_->set_macroscopic_region({{r.y_begin, r.y_end, r.z_begin, r.z_end}});
   }
 
   void build_membrane() {
@@ -450,7 +592,7 @@ class Simulation3D {
     if (power_law_) {
       const auto t0 = Clock::now();
       const auto areas = m3::voronoi_areas(mesh_);
-      const double* u[3] = {fluid_.velocity(0), fluid_.velocity(1), fluid_.velocity(2)};
+      const double* u[3] = {fluid_->velocity(0), fluid_->velocity(1), fluid_->velocity(2)};
       power_law_->update(positions(), nrm, areas.data(), n, u);  // (99)-(103)
       timings_.power_law += std::chrono::duration<double>(Clock::now() - t0).count();
     }
@@ -458,12 +600,12 @@ class Simulation3D {
     if (contrast_)
       contrast_->update(positions(), nrm, n, [&](std::size_t node, double nu) {
         if (power_law_) base_nu_[node] = nu;
-        fluid_.set_viscosity(node, nu + added(node));
+        fluid_->set_viscosity(node, nu + added(node));
       });
     if (power_law_) {
       auto base = [&](std::size_t node) { return contrast_ ? base_nu_[node] : units_.nu; };
-      for (std::size_t node : power_law_->previously_touched()) fluid_.set_viscosity(node, base(node) + added(node));
-      for (std::size_t node : power_law_->touched()) fluid_.set_viscosity(node, base(node) + added(node));
+      for (std::size_t node : power_law_->previously_touched()) fluid_->set_viscosity(node, base(node) + added(node));
+      for (std::size_t node : power_law_->touched()) fluid_->set_viscosity(node, base(node) + added(node));
     }
   }
 
@@ -496,9 +638,14 @@ class Simulation3D {
   Scene scene_;
   Units units_;
   std::vector<int> n_;
-  ib::Grid grid_;
-  std::string broken_;  // failure()
-  lbm::Fluid<lbm::D3Q19> fluid_;
+  ib::Grid grid_;     // the domain's lattice (the fine one under refinement): walls, centre, measures
+  ib::Grid ib_grid_;  // the lattice the membrane spreads to and reads from: grid_, or the refined block's fine lattice
+  std::string broken_;   // failure()
+  std::string stopped_;  // stopped()
+  std::unique_ptr<lbm::Fluid<lbm::D3Q19>> fluid_;                          // the uniform lattice, or
+  std::unique_ptr<lbm::refinement::RefinedFluid<lbm::D3Q19>> refined_;     // resolution.refine
+  std::array<double, 3> shift_{0.0, 0.0, 0.0};  // domain -> block frame (fine spacings)
+  std::vector<double> local_;                     // positions in the block frame
   m3::Mesh mesh_;
   m3::MembraneForces forces_;
   std::vector<m3::Vec3> force_;
@@ -566,6 +713,28 @@ void record_stretch(io::MemberWriter& out, const Scene& scene, const m3::PulledP
   out.set_attribute("stretch_force_spread", std::string("each patch vertex carries F A_i / sum A (A_i its Voronoi area (83) on the start shape): a uniform traction over the patch"));
 }
 
+// The refined block (resolution.refine), for the member file.
+void record_refinement(io::MemberWriter& out, const Scene& scene, const lbm::refinement::RefinedFluid<lbm::D3Q19>& f) {
+  const auto& b = f.block();
+  std::ostringstream block;
+  static const char* axis[3] = {"x", "y", "z"};
+  for (int d = 0; d < 3; ++d) {
+    if (d) block << ", ";
+    block << axis[d] << " ";
+    if (b.spans(d)) block << "spanned (" << b.coarse_n(d) << " coarse cells, periodic)";
+    else block << "[" << b.begin(d) << ", " << b.end(d) << ") of " << b.coarse_n(d);
+  }
+  out.set_attribute("refine", std::string("one static block at half the spacing and time step (docs/guide/refinement.md); "
+                                          "a, tau, the shear rate and steps_per_kt are the fine lattice's"));
+  out.set_attribute("refine_levels", static_cast<long>(scene.resolution.refine->levels));
+  out.set_attribute("refine_margin", scene.resolution.refine->margin);
+  out.set_attribute("refine_block_coarse_cells", block.str());
+  out.set_attribute("refine_coarse_lattice", std::to_string(b.coarse_n(0)) + " x " + std::to_string(b.coarse_n(1)) + " x " + std::to_string(b.coarse_n(2)));
+  out.set_attribute("refine_fine_lattice", std::to_string(b.fine_n(0)) + " x " + std::to_string(b.fine_n(1)) + " x " + std::to_string(b.fine_n(2)) +
+                                               " (the block plus a ghost layer one coarse cell thick)");
+  out.set_attribute("refine_start_shape_radius", start_shape_radius(scene) / scene.resolution.a);
+}
+
 }  // namespace
 
 StepSplit3D time_steps3d(const Scene& scene, long warmup_steps, long steps) {
@@ -589,7 +758,7 @@ StepSplit3D time_steps3d(const Scene& scene, long warmup_steps, long steps) {
   r.curvature = per_step(m1.curvature_s, m0.curvature_s, steps);
   r.bending = per_step(m1.bending_s, m0.bending_s, steps);
   r.vertices = sim.mesh().vertex_count();
-  r.nodes = static_cast<double>(scene.grid()[0]) * scene.grid()[1] * scene.grid()[2];
+  r.nodes = sim.node_updates_per_step();
   return r;
 }
 
@@ -640,9 +809,9 @@ std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, const Ru
   std::vector<int> triangles;
   for (const auto& t : mesh.triangles) triangles.insert(triangles.end(), t.begin(), t.end());
   std::vector<std::pair<double, std::string>> snapshots;  // (kt, .vtp file) written so far
+  if (const auto* refined = sim.refined_fluid()) record_refinement(out, scene, *refined);
   const std::string status = run_output_loop(
-      sim, scene, protocol, out, control, u.shear_rate,
-      static_cast<double>(scene.grid()[0]) * scene.grid()[1] * scene.grid()[2],
+      sim, scene, protocol, out, control, sim.step_shear_rate(), sim.node_updates_per_step(),
       [&](std::vector<double>& beta) { return sim.row(beta); },
       [&](double kt) {
         out.add_shape(kt, sim.shape(), 3, triangles);
@@ -658,7 +827,7 @@ std::string run_simulation3d(const Scene& scene, io::MemberWriter& out, const Ru
   if (scene.protocol.stretch) record_stretch(out, scene, sim.patches(), sim.pull_force(), mesh.vertex_count());
   out.set_markers(protocol.markers());
   out.set_attribute("protocol", protocol.phase_note());
-  out.set_attribute("steps", sim.steps());
+  out.set_attribute("steps", sim.fine_steps());  // of the lattice of steps_per_kt (the fine one under refinement)
   out.set_attribute("seconds_fluid", sim.timings().fluid);
   out.set_attribute("seconds_coupling", sim.timings().coupling);
   out.set_attribute("seconds_power_law", sim.timings().power_law);

@@ -10,6 +10,7 @@
 
 #include "solver/ib/hydrodynamic_radius.hpp"
 #include "common/json_text.hpp"
+#include "solver/scene/refined_block_extent.hpp"
 #include "solver/scene/run_bounds.hpp"
 #include "solver/scene/stretch_scene.hpp"
 #include "solver/scene/user_hints.hpp"
@@ -468,15 +469,47 @@ void read_viscous_steps(ObjectReader& q, int dim, Scene::Resolution& res, const 
     q.fail("collision", "the 2D rates (9) are a two-relaxation-time collision already (Lambda = 1/12)", "\"mrt\" in 2D");
 }
 
+// resolution.refine (3D): the fluid at half the spacing and time step in a block about the
+// capsule (solver/scene/refined_block_extent.hpp, docs/guide/refinement.md "In a scene"); a is
+// the fine lattice's radius. What the refined fluid does not hold yet is refused by its key.
+void read_refine(ObjectReader& q, const json& block, Scene& s) {
+  if (!q.has("refine")) return;
+  if (s.dim != 3) q.fail("refine", "the refined block is built for the 3D fluid only", "no refine key in 2D");
+  ObjectReader f(block.at("refine"), q.source(), q.child_path("refine"), {"levels", "margin"});
+  Scene::Resolution& res = s.resolution;
+  SceneRefinement spec;
+  spec.levels = f.integer("levels", spec.levels, 1, 1);
+  const double max_margin = 4.0;
+  spec.margin = f.number("margin", spec.margin, refined_block_min_margin(res), max_margin);
+  f.refuse_unknown();
+  res.refine = spec;
+  if (s.V != 1.0)
+    q.fail("refine", "the viscosity contrast (V = " + number_text(s.V) + ") is not built on the refined block yet", "no refine key unless V = 1");
+  if (s.power_law.K > 0 && s.power_law.model == PowerLawModel::fluid_shell)
+    q.fail("refine", "the power law's fluid shell (a viscosity field on the lattice) is not built on the refined block yet",
+           "no refine key with power_law.model \"fluid_shell\" and K > 0");
+  if (res.precision != lbm::Precision::double_precision)
+    q.fail("precision", "the refined fluid holds double populations", "\"double\" with resolution.refine");
+  const RefinedBlockPlan plan = refined_block_extent(s);
+  if (!plan.why.empty()) {
+    if (plan.why.rfind("the domain", 0) == 0) q.fail("refine", plan.why, "a x domain even on every axis");
+    f.fail("margin", plan.why, "[" + number_text(refined_block_min_margin(res)) + ", " + number_text(plan.max_margin) + "] in this channel");
+  }
+}
+
 void read_resolution(ObjectReader& r, Scene& s, const SceneDefaults& defaults) {
   json block = r.object("resolution", false);
   ObjectReader q(block, r.source(), r.child_path("resolution"),
                  {"a", "domain", "segments", "mesh_level", "tau", "kernel", "precision", "membrane_update",
-                  "marker_inset", "kelvin_voigt_step", "collision"});
-  read_lattice(q, block, s.dim, s.resolution, defaults);
-  read_delta_and_update(q, s.dim, s.resolution, defaults);
-  read_marker_inset(q, block, s.dim, s.resolution, defaults);
-  read_viscous_steps(q, s.dim, s.resolution, defaults);
+                  "marker_inset", "kelvin_voigt_step", "collision", "refine"});
+  // The refined fluid holds doubles: its scenes default to double precision.
+  SceneDefaults d = defaults;
+  if (block.is_object() && block.contains("refine")) d.precision = lbm::Precision::double_precision;
+  read_lattice(q, block, s.dim, s.resolution, d);
+  read_delta_and_update(q, s.dim, s.resolution, d);
+  read_marker_inset(q, block, s.dim, s.resolution, d);
+  read_viscous_steps(q, s.dim, s.resolution, d);
+  read_refine(q, block, s);
   q.refuse_unknown();
 }
 
@@ -608,6 +641,9 @@ json resolution_json(const Scene::Resolution& r, int dim, PhysicsVersion version
   // The rule's name where a rule set it (its value follows from a and the delta), else the number.
   if (r.marker_inset_rule == MarkerInsetRule::given) j["marker_inset"] = r.marker_inset;
   else j["marker_inset"] = choice_name(r.marker_inset_rule);
+  // Written only when given: it changes the numerics, so the ids of the members that set it,
+  // and of no other.
+  if (r.refine) j["refine"] = {{"levels", r.refine->levels}, {"margin", r.refine->margin}};
   return j;
 }
 

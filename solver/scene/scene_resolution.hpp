@@ -1,6 +1,7 @@
 #pragma once
 // The scene's `resolution` section (docs/guide/scenes.md "Keys"): the lattice, the membrane's
 // discretisation and the numerical choices of the fluid, the immersed boundary and the membrane.
+#include <optional>
 #include <vector>
 
 #include "solver/ib/delta.hpp"
@@ -10,6 +11,13 @@
 #include "solver/scene/choices.hpp"
 
 namespace capsule {
+
+// resolution.refine (3D): the fluid refined by a factor 2 in one static block about the capsule
+// (docs/guide/refinement.md "In a scene"); the scene's a is then the fine lattice's radius.
+struct SceneRefinement {
+  int levels = 1;       // factor-2 levels; one is built
+  double margin = 0.6;  // the block beyond the start shape's circumscribed sphere, in units of a
+};
 
 // The in-class defaults are those of a 2D scene of this solver's physics (scene_defaults).
 struct SceneResolution {
@@ -41,6 +49,9 @@ struct SceneResolution {
   // times with the odd moments at Lambda = 3/16 at every node (a viscosity contrast then no
   // longer moves with tau: docs/findings/accuracy_and_stability.md). 2D: mrt only (a TRT already).
   lbm::CollisionModel collision = scene_defaults(PhysicsVersion::current, 2).collision;
+  // A refined block about the capsule; absent: the uniform lattice (and a canonical scene
+  // without the key, so the ids of unrefined members do not depend on it).
+  std::optional<SceneRefinement> refine;
 };
 
 }  // namespace capsule

@@ -57,6 +57,9 @@ class RefinedBlock {
   }
 
   int coarse_n(int a) const { return n_[a]; }
+  // The covered coarse cells along axis a: [begin(a), end(a)).
+  int begin(int a) const { return begin_[a]; }
+  int end(int a) const { return end_[a]; }
   int fine_n(int a) const { return nf_[a]; }
   bool spans(int a) const { return span_[a]; }
   std::size_t coarse_size() const { return std::size_t(n_[0]) * std::size_t(n_[1]) * std::size_t(n_[2]); }

@@ -73,6 +73,9 @@ class RefinedFluid {
   double shear_rate_coarse() const { return s_coarse_; }
   double shear_rate_fine() const { return s_fine_; }
 
+  // The relaxation rates of both levels (relaxation.hpp): mrt, or trt with Lambda = 3/16.
+  void set_collision(CollisionModel model) { collision_ = model; }
+
   void set_wall_velocity(double u_bottom, double u_top) {
     u_bottom_ = u_bottom;
     u_top_ = u_top;
@@ -135,6 +138,49 @@ class RefinedFluid {
   std::array<int, 3> fine_grid() const { return {block_.fine_n(0), block_.fine_n(1), D == 3 ? block_.fine_n(2) : 1}; }
   double to_fine(int a, double x_coarse) const { return 2.0 * (x_coarse - block_.fine_centre({0, 0, 0})[a]) + 0.5; }
 
+  // Everything a later step() reads (the forces are spread afresh before each use): a restart
+  // point holds it, and import_state makes the next step bitwise the one the saved run took.
+  struct State {
+    std::vector<double> coarse, fine, coarse_density, coarse_velocity, fine_velocity;
+  };
+  void export_state(State& out) const { out = {coarse_, fine_, coarse_rho_, coarse_u_, fine_u_}; }
+  void import_state(State&& in) {
+    if (in.coarse.size() != coarse_.size() || in.fine.size() != fine_.size() || in.coarse_density.size() != coarse_rho_.size() ||
+        in.coarse_velocity.size() != coarse_u_.size() || in.fine_velocity.size() != fine_u_.size())
+      throw std::invalid_argument("RefinedFluid::import_state: the state is of another lattice or block");
+    coarse_ = std::move(in.coarse);
+    fine_ = std::move(in.fine);
+    coarse_rho_ = std::move(in.coarse_density);
+    coarse_u_ = std::move(in.coarse_velocity);
+    fine_u_ = std::move(in.fine_velocity);
+  }
+
+  // Largest |u| over the uncovered coarse cells and the block's fine cells (lattice velocity,
+  // the same number on both levels).
+  double max_speed() const {
+    double m2 = 0.0;
+    const std::size_t N = block_.coarse_size(), F = block_.fine_size();
+    for (int z = 0; z < block_.coarse_n(2); ++z)
+      for (int y = 0; y < block_.coarse_n(1); ++y)
+        for (int x = 0; x < block_.coarse_n(0); ++x) {
+          if (block_.covered({x, y, z})) continue;
+          const std::size_t n = block_.coarse_index(x, y, z);
+          double s = 0.0;
+          for (int a = 0; a < D; ++a) s += coarse_u_[a * N + n] * coarse_u_[a * N + n];
+          m2 = std::max(m2, s);
+        }
+    for (int z = 0; z < block_.fine_n(2); ++z)
+      for (int y = 0; y < block_.fine_n(1); ++y)
+        for (int x = 0; x < block_.fine_n(0); ++x) {
+          if (!block_.fine_in_block({x, y, z})) continue;
+          const std::size_t n = block_.fine_index(x, y, z);
+          double s = 0.0;
+          for (int a = 0; a < D; ++a) s += fine_u_[a * F + n] * fine_u_[a * F + n];
+          m2 = std::max(m2, s);
+        }
+    return std::sqrt(m2);
+  }
+
   // Mass (fine cell volumes) the last step's transfers created before restore_mass removed it.
   double last_transfer_mismatch() const { return last_mismatch_; }
 
@@ -192,7 +238,8 @@ class RefinedFluid {
       double f[Q], force[3], rho, u[3] = {0.0, 0.0, 0.0};
       for (int i = 0; i < Q; ++i) f[i] = coarse_[std::size_t(n) * Q + i];
       for (int a = 0; a < 3; ++a) force[a] = a < D ? coarse_force_[a * N + std::size_t(n)] : 0.0;
-      Collision<L>::collide(f, force, s_coarse_, rho, u);
+      if (collision_ == CollisionModel::trt) Collision<L>::template collide<CollisionModel::trt>(f, force, s_coarse_, rho, u);
+      else Collision<L>::collide(f, force, s_coarse_, rho, u);
       for (int i = 0; i < Q; ++i) coarse_[std::size_t(n) * Q + i] = f[i];
       coarse_rho_[std::size_t(n)] = rho;
       for (int a = 0; a < 3; ++a) coarse_u_[a * N + std::size_t(n)] = a < D ? u[a] : 0.0;
@@ -208,7 +255,8 @@ class RefinedFluid {
       double f[Q], force[3], rho, u[3] = {0.0, 0.0, 0.0};
       for (int i = 0; i < Q; ++i) f[i] = fine_[std::size_t(n) * Q + i];
       for (int a = 0; a < 3; ++a) force[a] = a < D ? fine_force_[a * N + std::size_t(n)] : 0.0;
-      Collision<L>::collide(f, force, s_fine_, rho, u);
+      if (collision_ == CollisionModel::trt) Collision<L>::template collide<CollisionModel::trt>(f, force, s_fine_, rho, u);
+      else Collision<L>::collide(f, force, s_fine_, rho, u);
       for (int i = 0; i < Q; ++i) fine_[std::size_t(n) * Q + i] = f[i];
       for (int a = 0; a < 3; ++a) fine_u_[a * N + std::size_t(n)] = a < D ? u[a] : 0.0;
     }
@@ -281,6 +329,7 @@ class RefinedFluid {
   Block block_;
   double s_coarse_, s_fine_;
   double u_bottom_ = 0.0, u_top_ = 0.0;
+  CollisionModel collision_ = CollisionModel::mrt;
   std::vector<double> coarse_, coarse_next_, fine_, fine_next_;
   std::vector<double> coarse_force_, fine_force_;
   std::vector<double> coarse_rho_, coarse_u_, fine_u_;
