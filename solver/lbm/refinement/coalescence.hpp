@@ -16,49 +16,32 @@
 // is returned to the fluid's balance (refined_fluid.hpp).
 #include <array>
 #include <cstddef>
+#include <vector>
 
 #include "solver/lbm/refinement/explosion.hpp"
 #include "solver/lbm/refinement/refined_block.hpp"
+#include "solver/lbm/refinement/ring_plan.hpp"
 
 namespace capsule::lbm::refinement {
 
-// Does ring cell R take direction i from the fine lattice? (R must be uncovered.)
+// Population i of ring cell r (RingPlan's position; plan.from_fine set) from the fine lattice,
+// with the Taylor coefficients the explosion of this coarse step kept (explosion.hpp); `moved`
+// gets the mass (fine cell volumes) the Taylor terms take out of the children's sum.
 template <class L>
-bool from_fine(const RefinedBlock<L::D>& block, const std::array<int, 3>& R, int i) {
-  if (!block.ring(R)) return false;
-  std::array<int, 3> S = R;
-  for (int a = 0; a < L::D; ++a) {
-    S[a] -= L::c[i][a];
-    if (a != 1) S[a] = (S[a] % block.coarse_n(a) + block.coarse_n(a)) % block.coarse_n(a);
-  }
-  if (S[1] < 0 || S[1] >= block.coarse_n(1)) return false;
-  return block.in_fine_lattice(S);
-}
-
-// Population i of ring cell R from the fine lattice; `moved` gets the mass (fine cell volumes)
-// the Taylor terms take out of the children's sum.
-template <class L>
-double coalesce(const RefinedBlock<L::D>& block, const double* coarse_post, const double* fine,
-                const std::array<int, 3>& R, int i, double& moved) {
-  constexpr int D = L::D;
-  const Taylor t = coarse_taylor<L>(block, coarse_post, R, i);
+double coalesce(const RefinedBlock<L::D>& block, const RingPlan<L>& plan, const std::vector<Taylor>& taylor, const double* fine,
+                std::size_t r, int i, double& moved) {
+  constexpr int D = L::D, children = RingPlan<L>::children;
+  const std::size_t ri = r * L::Q + std::size_t(i);
+  const Taylor& t = taylor[ri];
   // Taylor coefficients about the source R - c_i: g(R - c_i) = g(R) - h c_i.
   Taylor ts = t;
   for (int a = 0; a < D; ++a) ts.g[a] -= t.h[a] * L::c[i][a];
-  const std::array<int, 3> f0 = block.first_child(R);
+  const auto& c = plan.cells[r];
+  const double* fi = fine + std::size_t(i) * block.fine_size();
   double sum = 0.0, shift_sum = 0.0;
-  for (int k = 0; k < (1 << D); ++k) {
-    std::array<int, 3> o = f0;
-    for (int a = 0; a < D; ++a) o[a] += (k >> a) & 1;
-    sum += fine[block.fine_index(o[0], o[1], o[2]) * L::Q + i];
-    std::array<int, 3> o1 = o, o2 = o;
-    for (int a = 0; a < D; ++a) {
-      o1[a] -= L::c[i][a];
-      o2[a] -= 2 * L::c[i][a];
-    }
-    double shift = 0.0;
-    if (block.wrap_fine(o1) && block.fine_in_block(o1)) shift = 0.25;
-    else if (block.wrap_fine(o2) && block.fine_in_block(o2)) shift = -0.25;
+  for (int k = 0; k < children; ++k) {
+    sum += fi[c.child[std::size_t(k)]];
+    const double shift = 0.25 * plan.coalesce_shift[ri * children + std::size_t(k)];
     // The value stands for the coarse field at R - c_i + e, e = x(o) - x(R) + shift c_i;
     // without the shift it would stand for R - c_i + x(o) - x(R), whose children mean is R - c_i
     // up to the curvature term, which is taken out as well.
@@ -67,7 +50,7 @@ double coalesce(const RefinedBlock<L::D>& block, const double* coarse_post, cons
     shift_sum += ts.change(e);
   }
   moved = shift_sum;
-  return (sum - shift_sum) / double(1 << D);
+  return (sum - shift_sum) / double(children);
 }
 
 }  // namespace capsule::lbm::refinement

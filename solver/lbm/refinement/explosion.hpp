@@ -25,13 +25,13 @@
 #include <vector>
 
 #include "solver/lbm/refinement/refined_block.hpp"
+#include "solver/lbm/refinement/ring_plan.hpp"
 
 namespace capsule::lbm::refinement {
 
 // Taylor coefficients of population i around ring cell R (coarse spacings): per axis the first
-// derivative g_a and the second h_a, central where both neighbours are uncovered channel cells,
-// else one-sided away from the block over two cells (exact for a quadratic field, as f* is in a
-// linear shear: the equilibrium (5) holds u^2). Mixed derivatives are left out.
+// derivative g_a and the second h_a (exact for a quadratic field, as f* is in a linear shear:
+// the equilibrium (5) holds u^2). Mixed derivatives are left out.
 struct Taylor {
   double g[3] = {0.0, 0.0, 0.0};
   double h[3] = {0.0, 0.0, 0.0};
@@ -43,88 +43,68 @@ struct Taylor {
   }
 };
 
+// The coefficients about ring cell c of population i, f the coarse populations of direction i
+// (RingPlan's stencil: central where both neighbours are uncovered channel cells, else
+// one-sided away from the block over two cells).
 template <class L>
-Taylor coarse_taylor(const RefinedBlock<L::D>& block, const double* coarse, const std::array<int, 3>& R, int i) {
+Taylor taylor_at(const typename RingPlan<L>::Cell& c, const double* f) {
+  using Plan = RingPlan<L>;
   Taylor t;
-  const double f0 = coarse[block.coarse_index(R[0], R[1], R[2]) * L::Q + i];
+  const double f0 = f[c.coarse];
   for (int a = 0; a < L::D; ++a) {
-    // f at R + k e_a for k = -2, -1, 1, 2 where usable.
-    double f[5] = {0.0, 0.0, f0, 0.0, 0.0};
-    bool ok[5] = {false, false, true, false, false};
-    for (int k = -2; k <= 2; ++k) {
-      if (k == 0) continue;
-      std::array<int, 3> N = R;
-      N[a] += k;
-      if (a != 1) N[a] = (N[a] % block.coarse_n(a) + block.coarse_n(a)) % block.coarse_n(a);
-      ok[k + 2] = N[a] >= 0 && N[a] < block.coarse_n(a) && !block.covered(N);
-      if (ok[k + 2]) f[k + 2] = coarse[block.coarse_index(N[0], N[1], N[2]) * L::Q + i];
-    }
-    if (ok[1] && ok[3]) {
-      t.g[a] = 0.5 * (f[3] - f[1]);
-      t.h[a] = f[3] - 2.0 * f0 + f[1];
-    } else if (ok[3] && ok[4]) {
-      t.g[a] = 0.5 * (-3.0 * f0 + 4.0 * f[3] - f[4]);
-      t.h[a] = f0 - 2.0 * f[3] + f[4];
-    } else if (ok[1] && ok[0]) {
-      t.g[a] = 0.5 * (3.0 * f0 - 4.0 * f[1] + f[0]);
-      t.h[a] = f0 - 2.0 * f[1] + f[0];
+    const auto& s = c.axis[std::size_t(a)];
+    const double f1 = f[s.m1], f2 = f[s.m2];
+    switch (s.kind) {
+      case Plan::central:  // m1 = R - 1, m2 = R + 1
+        t.g[a] = 0.5 * (f2 - f1);
+        t.h[a] = f2 - 2.0 * f0 + f1;
+        break;
+      case Plan::forward:  // m1 = R + 1, m2 = R + 2
+        t.g[a] = 0.5 * (-3.0 * f0 + 4.0 * f1 - f2);
+        t.h[a] = f0 - 2.0 * f1 + f2;
+        break;
+      case Plan::backward:  // m1 = R - 1, m2 = R - 2
+        t.g[a] = 0.5 * (3.0 * f0 - 4.0 * f1 + f2);
+        t.h[a] = f0 - 2.0 * f1 + f2;
+        break;
+      case Plan::none:
+        break;
     }
   }
   return t;
 }
 
-// Is the coarse cell R + c_i (wrapped) in the fine lattice?
+// coarse: the post-collision populations (shifted, by direction: RefinedBlock::coarse_at);
+// fine gets the ghost children. `taylor` keeps each (ring cell, i)'s coefficients for the
+// coalescence of the same coarse step (coalescence.hpp), which reads the same coarse values.
+// Returns the mass (fine cell volumes) the fed channels carry beyond the coarse share.
 template <class L>
-bool feeds_fine(const RefinedBlock<L::D>& block, const std::array<int, 3>& R, int i) {
-  std::array<int, 3> S = R;
-  for (int a = 0; a < L::D; ++a) {
-    S[a] += L::c[i][a];
-    if (a != 1) S[a] = (S[a] % block.coarse_n(a) + block.coarse_n(a)) % block.coarse_n(a);
-  }
-  return S[1] >= 0 && S[1] < block.coarse_n(1) && block.in_fine_lattice(S);
-}
-
-// coarse: Q populations per coarse cell (post-collision on uncovered cells); fine: Q per fine
-// cell. Returns the mass (fine cell volumes) the fed channels carry beyond the coarse share.
-template <class L>
-double explode(const RefinedBlock<L::D>& block, const double* coarse, double* fine) {
-  constexpr int Q = L::Q, D = L::D;
-  const int children = 1 << D;
-  const int nzc = D == 3 ? block.fine_n(2) / 2 : 1;
-  const int nyc = block.fine_n(1) / 2, nxc = block.fine_n(0) / 2;
-  const std::array<int, 3> base = block.parent({0, 0, 0});
-  const long cells = long(nxc) * nyc * nzc;
+double explode(const RefinedBlock<L::D>& block, const RingPlan<L>& plan, const double* coarse, double* fine,
+               std::vector<Taylor>& taylor) {
+  constexpr int Q = L::Q, D = L::D, children = RingPlan<L>::children;
+  const std::size_t N = block.coarse_size(), F = block.fine_size();
+  const long cells = long(plan.cells.size());
+  taylor.resize(std::size_t(cells) * Q);
   std::vector<double> excess(std::size_t(cells), 0.0);
 #pragma omp parallel for schedule(static)
   for (long r = 0; r < cells; ++r) {
-    std::array<int, 3> R{base[0] + int(r % nxc), base[1] + int((r / nxc) % nyc), base[2] + int(r / (long(nxc) * nyc))};
-    for (int a = 0; a < D; ++a)
-      if (block.spans(a)) R[a] = (R[a] % block.coarse_n(a) + block.coarse_n(a)) % block.coarse_n(a);
-    if (!block.ring(R)) continue;
-    const std::size_t cR = block.coarse_index(R[0], R[1], R[2]);
-    const std::array<int, 3> f0 = block.first_child(R);
+    const auto& c = plan.cells[std::size_t(r)];
     for (int i = 0; i < Q; ++i) {
-      const double fR = coarse[cR * Q + i];
-      const Taylor t = coarse_taylor<L>(block, coarse, R, i);
+      const double* fi = coarse + std::size_t(i) * N;
+      const double fR = fi[c.coarse];
+      const std::size_t ri = std::size_t(r) * Q + std::size_t(i);
+      const Taylor t = taylor_at<L>(c, fi);
+      taylor[ri] = t;
       double sum = 0.0;
       for (int k = 0; k < children; ++k) {
-        std::array<int, 3> o = f0;
-        for (int a = 0; a < D; ++a) o[a] += (k >> a) & 1;
-        std::array<int, 3> o1 = o, o2 = o;
-        for (int a = 0; a < D; ++a) {
-          o1[a] += L::c[i][a];
-          o2[a] += 2 * L::c[i][a];
-        }
-        double shift = 0.0;
-        if (block.wrap_fine(o1) && block.fine_in_block(o1)) shift = -0.25;
-        else if (block.wrap_fine(o2) && block.fine_in_block(o2)) shift = 0.25;
+        const double shift = 0.25 * plan.explode_shift[ri * children + std::size_t(k)];
         double e[3] = {0.0, 0.0, 0.0};
         for (int a = 0; a < D; ++a) e[a] = 0.5 * (((k >> a) & 1) - 0.5) + shift * L::c[i][a];
         const double v = fR + t.change(e);
-        fine[block.fine_index(o[0], o[1], o[2]) * Q + i] = v;
+        fine[std::size_t(i) * F + c.child[std::size_t(k)]] = v;
         sum += v;
       }
-      if (feeds_fine<L>(block, R, i)) excess[std::size_t(r)] += sum - children * fR;
+      if (plan.feeds[ri]) excess[std::size_t(r)] += sum - children * fR;
     }
   }
   double total = 0.0;

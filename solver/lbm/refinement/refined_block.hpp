@@ -71,6 +71,11 @@ class RefinedBlock {
     return std::size_t(x) + std::size_t(nf_[0]) * (std::size_t(y) + std::size_t(nf_[1]) * std::size_t(z));
   }
 
+  // Where population i of a cell lies: the populations are stored by direction, each
+  // direction's cells contiguous (x fastest), so that streaming reads and writes in order.
+  std::size_t coarse_at(std::size_t cell, int i) const { return std::size_t(i) * coarse_size() + cell; }
+  std::size_t fine_at(std::size_t cell, int i) const { return std::size_t(i) * fine_size() + cell; }
+
   // Coarse cell covered by the block (its populations are not used).
   bool covered(const std::array<int, 3>& c) const {
     for (int a = 0; a < D; ++a)

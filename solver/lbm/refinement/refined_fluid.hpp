@@ -16,6 +16,10 @@
 // The mass of the populations, sum over uncovered coarse cells of 2^D sum_i f_i plus sum over
 // block cells of sum_i f_i (in fine cell volumes), is conserved to round-off.
 //
+// Storage: the populations are shifted, g_i = f_i - w_i (split_collision.hpp, as Fluid stores
+// them), by direction (RefinedBlock::coarse_at). The transfers and the bounce-back are linear
+// with coefficients that sum to one, so they act on g as on f.
+//
 // Units: everything is in the lattice units of its own level. The coarse force and the coarse
 // velocity are in coarse units; the fine force is in fine units (a body-force density F_c on the
 // coarse lattice is F_c / 2 on the fine one), the fine velocity likewise (the same number as in
@@ -30,7 +34,9 @@
 #include <utility>
 #include <vector>
 
+#include "solver/lbm/collide_and_bounce.hpp"  // CAPSULE_LBM_FAST_CLONE_ATTR
 #include "solver/lbm/collision.hpp"
+#include "solver/lbm/split_collision.hpp"
 #include "solver/lbm/lattice.hpp"
 #include "solver/lbm/refinement/coalescence.hpp"
 #include "solver/lbm/refinement/explosion.hpp"
@@ -38,6 +44,26 @@
 #include "solver/lbm/relaxation.hpp"
 
 namespace capsule::lbm::refinement {
+
+// Collides `length` consecutive cells from `first` (populations by direction, N cells per
+// direction, shifted): one vector loop, cloned per CPU like Fluid's rows (collide_and_bounce.hpp);
+// rho (when with_rho) and u get the macroscopic fields.
+template <class L, bool trt, bool with_rho>
+[[gnu::flatten]] CAPSULE_LBM_FAST_CLONE_ATTR void collide_run(double* pop, std::size_t N, const double* force, double s_nu,
+                                                              double* rho_out, double* u_out, std::size_t first, int length) {
+  constexpr int Q = L::Q, D = L::D;
+#pragma omp simd
+  for (int m = 0; m < length; ++m) {
+    const std::size_t n = first + std::size_t(m);
+    double f[Q], F[3] = {0.0, 0.0, 0.0}, rho, u[3] = {0.0, 0.0, 0.0};
+    for (int i = 0; i < Q; ++i) f[i] = pop[std::size_t(i) * N + n];
+    for (int a = 0; a < D; ++a) F[a] = force[std::size_t(a) * N + n];
+    SplitCollision<L, double>::template collide<true, trt>(f, F, s_nu, rho, u);
+    for (int i = 0; i < Q; ++i) pop[std::size_t(i) * N + n] = f[i];
+    if constexpr (with_rho) rho_out[n] = rho;
+    for (int a = 0; a < 3; ++a) u_out[std::size_t(a) * N + n] = a < D ? u[a] : 0.0;
+  }
+}
 
 template <class L>
 class RefinedFluid {
@@ -59,13 +85,12 @@ class RefinedFluid {
         fine_force_(3 * block_.fine_size(), 0.0),
         coarse_rho_(block_.coarse_size(), 1.0),
         coarse_u_(3 * block_.coarse_size(), 0.0),
-        fine_u_(3 * block_.fine_size(), 0.0) {
+        fine_u_(3 * block_.fine_size(), 0.0),
+        ring_(block_) {
     if (!(nu > 0.0)) throw std::invalid_argument("RefinedFluid: viscosity must be positive");
-    for (int z = 0; z < block_.coarse_n(2); ++z)
-      for (int y = 0; y < block_.coarse_n(1); ++y)
-        for (int x = 0; x < block_.coarse_n(0); ++x)
-          if (block_.ring({x, y, z})) ring_cells_.push_back(block_.coarse_index(x, y, z));
+    for (const auto& c : ring_.cells) ring_cells_.push_back(c.coarse);
     moved_.assign(block_.coarse_size(), 0.0);
+    classify_cells();
     initialise_velocity([](double, double, double) { return std::array<double, 3>{0.0, 0.0, 0.0}; });
   }
 
@@ -88,7 +113,9 @@ class RefinedFluid {
         for (int x = 0; x < block_.coarse_n(0); ++x) {
           const std::size_t n = block_.coarse_index(x, y, z);
           const auto v = u(x + 0.5, y + 0.5, z + 0.5);
-          equilibrium(1.0, v, &coarse_[n * Q]);
+          double f[Q];
+          equilibrium(1.0, v, f);
+          for (int i = 0; i < Q; ++i) coarse_[block_.coarse_at(n, i)] = f[i];
           for (int a = 0; a < 3; ++a) coarse_u_[a * block_.coarse_size() + n] = a < D ? v[a] : 0.0;
         }
     for (int z = 0; z < block_.fine_n(2); ++z)
@@ -97,7 +124,9 @@ class RefinedFluid {
           const std::size_t n = block_.fine_index(x, y, z);
           const auto p = block_.fine_centre({x, y, z});
           const auto v = u(p[0], p[1], p[2]);
-          equilibrium(1.0, v, &fine_[n * Q]);
+          double f[Q];
+          equilibrium(1.0, v, f);
+          for (int i = 0; i < Q; ++i) fine_[block_.fine_at(n, i)] = f[i];
           for (int a = 0; a < 3; ++a) fine_u_[a * block_.fine_size() + n] = a < D ? v[a] : 0.0;
         }
   }
@@ -120,7 +149,7 @@ class RefinedFluid {
   template <class Before, class After>
   void step(Before&& before, After&& after) {
     collide_coarse();
-    const double exploded = explode<L>(block_, coarse_.data(), fine_.data());
+    const double exploded = explode<L>(block_, ring_, coarse_.data(), fine_.data(), taylor_);
     for (int sub = 0; sub < 2; ++sub) {
       before(sub);
       collide_fine();
@@ -194,7 +223,7 @@ class RefinedFluid {
           if (block_.covered({x, y, z})) continue;
           const std::size_t n = block_.coarse_index(x, y, z);
           double s = 0.0;
-          for (int i = 0; i < Q; ++i) s += coarse_[n * Q + i] - weight(i);
+          for (int i = 0; i < Q; ++i) s += coarse_[block_.coarse_at(n, i)];
           m += double(1 << D) * s;
         }
     for (int z = 0; z < block_.fine_n(2); ++z)
@@ -202,7 +231,7 @@ class RefinedFluid {
         for (int x = 0; x < block_.fine_n(0); ++x) {
           if (!block_.fine_in_block({x, y, z})) continue;
           const std::size_t n = block_.fine_index(x, y, z);
-          for (int i = 0; i < Q; ++i) m += fine_[n * Q + i] - weight(i);
+          for (int i = 0; i < Q; ++i) m += fine_[block_.fine_at(n, i)];
         }
     return m;
   }
@@ -216,7 +245,7 @@ class RefinedFluid {
     for (int i = 0; i < Q; ++i) {
       double cu = 0.0;
       for (int a = 0; a < D; ++a) cu += L::c[i][a] * u[a];
-      f[i] = weight(i) * rho * (1.0 + 3.0 * cu + 4.5 * cu * cu - 1.5 * uu);
+      f[i] = weight(i) * rho * (1.0 + 3.0 * cu + 4.5 * cu * cu - 1.5 * uu) - weight(i);  // shifted
     }
   }
 
@@ -229,53 +258,79 @@ class RefinedFluid {
     return {int(n % nx), int((n / nx) % ny), int(n / (nx * ny))};
   }
 
-  void collide_coarse() {
-    const long cells = long(block_.coarse_size());
-    const std::size_t N = block_.coarse_size();
-#pragma omp parallel for schedule(static)
-    for (long n = 0; n < cells; ++n) {
-      if (block_.covered(coarse_cell(n))) continue;
-      double f[Q], force[3], rho, u[3] = {0.0, 0.0, 0.0};
-      for (int i = 0; i < Q; ++i) f[i] = coarse_[std::size_t(n) * Q + i];
-      for (int a = 0; a < 3; ++a) force[a] = a < D ? coarse_force_[a * N + std::size_t(n)] : 0.0;
-      if (collision_ == CollisionModel::trt) Collision<L>::template collide<CollisionModel::trt>(f, force, s_coarse_, rho, u);
-      else Collision<L>::collide(f, force, s_coarse_, rho, u);
-      for (int i = 0; i < Q; ++i) coarse_[std::size_t(n) * Q + i] = f[i];
-      coarse_rho_[std::size_t(n)] = rho;
-      for (int a = 0; a < 3; ++a) coarse_u_[a * N + std::size_t(n)] = a < D ? u[a] : 0.0;
+  // Runs of consecutive cell indices (at most kSpan long, so that the threads share them
+  // evenly and the split does not depend on their number).
+  struct Span {
+    std::size_t start;
+    int length;
+  };
+  static constexpr int kSpan = 256;
+  static std::vector<Span> spans_of(const std::vector<std::size_t>& cells) {
+    std::vector<Span> out;
+    for (std::size_t c : cells) {
+      if (!out.empty() && out.back().start + std::size_t(out.back().length) == c && out.back().length < kSpan) ++out.back().length;
+      else out.push_back({c, 1});
     }
+    return out;
+  }
+
+  // Collides the cells of `spans`, the runs shared among the threads.
+  template <bool trt, bool with_rho>
+  static void collide_spans(const std::vector<Span>& spans, double* pop, std::size_t N, const double* force, double s_nu,
+                            double* rho_out, double* u_out) {
+    const long count = long(spans.size());
+#pragma omp parallel for schedule(static)
+    for (long k = 0; k < count; ++k)
+      collide_run<L, trt, with_rho>(pop, N, force, s_nu, rho_out, u_out, spans[std::size_t(k)].start, spans[std::size_t(k)].length);
+  }
+
+  void collide_coarse() {
+    if (collision_ == CollisionModel::trt)
+      collide_spans<true, true>(coarse_collide_, coarse_.data(), block_.coarse_size(), coarse_force_.data(), s_coarse_,
+                                         coarse_rho_.data(), coarse_u_.data());
+    else
+      collide_spans<false, true>(coarse_collide_, coarse_.data(), block_.coarse_size(), coarse_force_.data(), s_coarse_,
+                                         coarse_rho_.data(), coarse_u_.data());
   }
 
   void collide_fine() {
-    const long cells = long(block_.fine_size());
-    const std::size_t N = block_.fine_size();
+    if (collision_ == CollisionModel::trt)
+      collide_spans<true, false>(fine_collide_, fine_.data(), block_.fine_size(), fine_force_.data(), s_fine_, nullptr,
+                                         fine_u_.data());
+    else
+      collide_spans<false, false>(fine_collide_, fine_.data(), block_.fine_size(), fine_force_.data(), s_fine_, nullptr,
+                                         fine_u_.data());
+  }
+
+  // Streams the runs of cells whose every population comes from the neighbour at a fixed
+  // index offset (no wall, no wrap, no transfer): one contiguous copy per direction.
+  static void stream_spans(const std::vector<Span>& spans, const double* from, double* to, std::size_t N,
+                           const std::array<long, Q>& offset) {
+    const long count = long(spans.size());
 #pragma omp parallel for schedule(static)
-    for (long n = 0; n < cells; ++n) {
-      if (!block_.fine_in_block(fine_cell(n))) continue;
-      double f[Q], force[3], rho, u[3] = {0.0, 0.0, 0.0};
-      for (int i = 0; i < Q; ++i) f[i] = fine_[std::size_t(n) * Q + i];
-      for (int a = 0; a < 3; ++a) force[a] = a < D ? fine_force_[a * N + std::size_t(n)] : 0.0;
-      if (collision_ == CollisionModel::trt) Collision<L>::template collide<CollisionModel::trt>(f, force, s_fine_, rho, u);
-      else Collision<L>::collide(f, force, s_fine_, rho, u);
-      for (int i = 0; i < Q; ++i) fine_[std::size_t(n) * Q + i] = f[i];
-      for (int a = 0; a < 3; ++a) fine_u_[a * N + std::size_t(n)] = a < D ? u[a] : 0.0;
+    for (long k = 0; k < count; ++k) {
+      const std::size_t first = spans[std::size_t(k)].start;
+      const int length = spans[std::size_t(k)].length;
+      for (int i = 0; i < Q; ++i) {
+        const double* src = from + std::size_t(i) * N + std::size_t(long(first) - offset[i]);
+        double* dst = to + std::size_t(i) * N + first;
+#pragma omp simd
+        for (int m = 0; m < length; ++m) dst[m] = src[m];
+      }
     }
   }
 
   // Pull streaming over the whole fine lattice; a ghost cell whose source lies outside keeps
   // its value (it never reaches the block nor a coalescence, coalescence.hpp).
   void stream_fine() {
-    const long cells = long(block_.fine_size());
+    const std::size_t F = block_.fine_size();
+    stream_spans(fine_fast_spans_, fine_.data(), fine_next_.data(), F, fine_offset_);
+    const long cells = long(fine_slow_.size());
 #pragma omp parallel for schedule(static)
-    for (long n = 0; n < cells; ++n) {
-      const std::array<int, 3> x = fine_cell(n);
-      for (int i = 0; i < Q; ++i) {
-        std::array<int, 3> s = x;
-        for (int a = 0; a < D; ++a) s[a] -= L::c[i][a];
-        const bool inside = block_.wrap_fine(s);
-        fine_next_[std::size_t(n) * Q + i] =
-            inside ? fine_[block_.fine_index(s[0], s[1], s[2]) * Q + i] : fine_[std::size_t(n) * Q + i];
-      }
+    for (long c = 0; c < cells; ++c) {
+      const std::size_t n = fine_slow_[std::size_t(c)];
+      for (int i = 0; i < Q; ++i)
+        fine_next_[std::size_t(i) * F + n] = fine_[std::size_t(i) * F + fine_source_[std::size_t(c) * Q + std::size_t(i)]];
     }
     std::swap(fine_, fine_next_);
   }
@@ -283,31 +338,26 @@ class RefinedFluid {
   // Returns the mass the coalescence created (fine cell volumes).
   double stream_coarse() {
     using B = MomentBasis<L>;
-    const long cells = long(block_.coarse_size());
-    const int ny = block_.coarse_n(1);
+    const std::size_t N = block_.coarse_size();
     std::fill(moved_.begin(), moved_.end(), 0.0);
+    stream_spans(coarse_fast_spans_, coarse_.data(), coarse_next_.data(), N, coarse_offset_);
+    const long cells = long(coarse_slow_.size());
 #pragma omp parallel for schedule(static)
-    for (long n = 0; n < cells; ++n) {
-      const std::array<int, 3> R = coarse_cell(n);
-      if (block_.covered(R)) continue;
+    for (long c = 0; c < cells; ++c) {
+      const std::size_t n = coarse_slow_[std::size_t(c)];
       for (int i = 0; i < Q; ++i) {
-        double& out = coarse_next_[std::size_t(n) * Q + i];
-        const int ys = R[1] - L::c[i][1];
-        if (ys < 0 || ys >= ny) {
+        double& out = coarse_next_[std::size_t(i) * N + n];
+        const long source = coarse_source_[std::size_t(c) * Q + std::size_t(i)];
+        if (source >= 0) {
+          out = coarse_[std::size_t(i) * N + std::size_t(source)];
+        } else if (source == kFromWall) {
           // Half-way bounce-back with the moving-wall term (fluid.hpp): c_i points away from the wall.
-          const double uw = ys < 0 ? u_bottom_ : u_top_;
-          out = coarse_[std::size_t(n) * Q + B::opposite[i]] + 6.0 * weight(i) * coarse_rho_[std::size_t(n)] * L::c[i][0] * uw;
-        } else if (from_fine<L>(block_, R, i)) {
-          double moved = 0.0;
-          out = coalesce<L>(block_, coarse_.data(), fine_.data(), R, i, moved);
-          moved_[std::size_t(n)] -= moved;
+          const double uw = L::c[i][1] > 0 ? u_bottom_ : u_top_;
+          out = coarse_[std::size_t(B::opposite[i]) * N + n] + 6.0 * weight(i) * coarse_rho_[n] * L::c[i][0] * uw;
         } else {
-          std::array<int, 3> S = R;
-          for (int a = 0; a < D; ++a) {
-            S[a] -= L::c[i][a];
-            if (a != 1) S[a] = (S[a] % block_.coarse_n(a) + block_.coarse_n(a)) % block_.coarse_n(a);
-          }
-          out = coarse_[block_.coarse_index(S[0], S[1], S[2]) * Q + i];
+          double moved = 0.0;
+          out = coalesce<L>(block_, ring_, taylor_, fine_.data(), std::size_t(ring_.ring_of[n]), i, moved);
+          moved_[n] -= moved;
         }
       }
     }
@@ -317,13 +367,74 @@ class RefinedFluid {
     return created;
   }
 
+  // The cells each loop visits, once: the collided cells of both levels (ascending), and the
+  // cells whose populations all stream from a neighbour that needs no test (no wall, no
+  // wrap, no transfer), with the index offset of each direction.
+  void classify_cells() {
+    for (int i = 0; i < Q; ++i) {
+      coarse_offset_[i] = long(L::c[i][0]) + long(block_.coarse_n(0)) * (long(L::c[i][1]) + long(block_.coarse_n(1)) * long(D == 3 ? L::c[i][2] : 0));
+      fine_offset_[i] = long(L::c[i][0]) + long(block_.fine_n(0)) * (long(L::c[i][1]) + long(block_.fine_n(1)) * long(D == 3 ? L::c[i][2] : 0));
+    }
+    std::vector<std::size_t> collided, fast;
+    for (long n = 0; n < long(block_.coarse_size()); ++n) {
+      const std::array<int, 3> R = coarse_cell(n);
+      if (block_.covered(R)) continue;
+      collided.push_back(std::size_t(n));
+      bool inside = !block_.ring(R);
+      for (int a = 0; a < D; ++a) inside = inside && R[a] >= 1 && R[a] <= block_.coarse_n(a) - 2;
+      (inside ? fast : coarse_slow_).push_back(std::size_t(n));
+    }
+    coarse_collide_ = spans_of(collided);
+    coarse_fast_spans_ = spans_of(fast);
+    const int ny = block_.coarse_n(1);
+    for (std::size_t n : coarse_slow_) {
+      const std::array<int, 3> R = coarse_cell(long(n));
+      const int r = ring_.ring_of[n];
+      for (int i = 0; i < Q; ++i) {
+        const int ys = R[1] - L::c[i][1];
+        if (ys < 0 || ys >= ny) {
+          coarse_source_.push_back(kFromWall);
+        } else if (r >= 0 && ring_.from_fine[std::size_t(r) * Q + std::size_t(i)]) {
+          coarse_source_.push_back(kFromFine);
+        } else {
+          std::array<int, 3> S = R;
+          for (int a = 0; a < D; ++a) {
+            S[a] -= L::c[i][a];
+            if (a != 1) S[a] = (S[a] % block_.coarse_n(a) + block_.coarse_n(a)) % block_.coarse_n(a);
+          }
+          coarse_source_.push_back(long(block_.coarse_index(S[0], S[1], S[2])));
+        }
+      }
+    }
+    collided.clear();
+    fast.clear();
+    for (long n = 0; n < long(block_.fine_size()); ++n) {
+      const std::array<int, 3> x = fine_cell(n);
+      if (block_.fine_in_block(x)) collided.push_back(std::size_t(n));
+      bool inside = true;
+      for (int a = 0; a < D; ++a) inside = inside && x[a] >= 1 && x[a] <= block_.fine_n(a) - 2;
+      (inside ? fast : fine_slow_).push_back(std::size_t(n));
+    }
+    fine_collide_ = spans_of(collided);
+    fine_fast_spans_ = spans_of(fast);
+    // A ghost cell whose source lies outside keeps its value (it never reaches the block).
+    for (std::size_t n : fine_slow_) {
+      const std::array<int, 3> x = fine_cell(long(n));
+      for (int i = 0; i < Q; ++i) {
+        std::array<int, 3> src = x;
+        for (int a = 0; a < D; ++a) src[a] -= L::c[i][a];
+        fine_source_.push_back(block_.wrap_fine(src) ? block_.fine_index(src[0], src[1], src[2]) : n);
+      }
+    }
+  }
+
   // Removes the mass the transfers created at the block's edges and corners (explosion.hpp,
   // coalescence.hpp) from the rest populations of the ring cells, evenly: zero in a steady
   // flow linear in space, where both lattices hold their exact solutions.
   void restore_mass(double created) {
     last_mismatch_ = created;
     const double per_population = created / (double(1 << D) * double(ring_cells_.size()));
-    for (std::size_t r : ring_cells_) coarse_[r * Q] -= per_population;
+    for (std::size_t r : ring_cells_) coarse_[block_.coarse_at(r, 0)] -= per_population;
   }
 
   Block block_;
@@ -333,8 +444,20 @@ class RefinedFluid {
   std::vector<double> coarse_, coarse_next_, fine_, fine_next_;
   std::vector<double> coarse_force_, fine_force_;
   std::vector<double> coarse_rho_, coarse_u_, fine_u_;
+  RingPlan<L> ring_;                     // the transfers' geometry
+  std::vector<Taylor> taylor_;           // the explosion's coefficients, per (ring cell, i), for the coalescence
   std::vector<std::size_t> ring_cells_;  // ascending index: the sums are in a fixed order
   std::vector<double> moved_;
+  // classify_cells(): the collided cells, the cells streamed at a fixed offset, the rest.
+  std::vector<Span> coarse_collide_, fine_collide_, coarse_fast_spans_, fine_fast_spans_;
+  std::vector<std::size_t> coarse_slow_, fine_slow_;
+  // Per slow cell and direction: where the population streams from. Coarse: a cell index, or
+  // kFromWall (bounce-back) or kFromFine (coalescence); fine: a cell index (its own when the
+  // source lies outside).
+  static constexpr long kFromWall = -1, kFromFine = -2;
+  std::vector<long> coarse_source_;
+  std::vector<std::size_t> fine_source_;
+  std::array<long, Q> coarse_offset_{}, fine_offset_{};
   double last_mismatch_ = 0.0;
 };
 
