@@ -57,4 +57,18 @@ RefinedBlockPlan refined_block_extent(const Scene& scene) {
   return plan;
 }
 
+RefinedCellCounts refined_cell_counts(const Scene& scene) {
+  const RefinedBlockPlan plan = refined_block_extent(scene);
+  if (!plan.why.empty()) return {};
+  const std::vector<int> n = scene.grid();
+  RefinedCellCounts c{1.0, 1.0};
+  for (int d = 0; d < 3; ++d) {
+    const int nc = n[d] / 2;
+    c.coarse *= nc;
+    const bool spans = plan.extent.begin[d] == 0 && plan.extent.end[d] == nc && d != 1;
+    c.fine *= spans ? 2.0 * nc : 2.0 * (plan.extent.end[d] - plan.extent.begin[d] + 2);
+  }
+  return c;
+}
+
 }  // namespace capsule

@@ -30,4 +30,11 @@ struct RefinedBlockPlan {
 };
 RefinedBlockPlan refined_block_extent(const Scene& scene);
 
+// The cells of both lattices (the fine one with its ghost layer), for the memory and cost
+// estimates; zeros when the block does not fit.
+struct RefinedCellCounts {
+  double coarse = 0, fine = 0;
+};
+RefinedCellCounts refined_cell_counts(const Scene& scene);
+
 }  // namespace capsule

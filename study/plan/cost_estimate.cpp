@@ -1,4 +1,5 @@
 #include "study/plan/cost_estimate.hpp"
+#include "solver/scene/refined_block_extent.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -40,6 +41,16 @@ constexpr double k2DContrastPerSegment = 0.21e-6, k2DKelvinVoigtPerSegment = 1.3
 // and 0.4 of a core to the 3D membrane side (2 threads: 1.3-1.45x, bench member3d); the 2D
 // membrane (140 segments) runs on one thread.
 constexpr double kThreadEfficiency = 0.8, k3DMembraneThreadEfficiency = 0.4;
+// The refined fluid (resolution.refine; docs/findings/refinement.md "The capsule on the fine
+// level"): node updates of both levels per second on one thread, from the user seconds of a
+// 3D sphere (level 4) less its membrane side, 2026-12-08: 11.4e6 at a = 10 (margin 0.6, 9.7e4
+// updates per fine step), 8.6e6 at a = 20 (margin 0.7, 7.7e5); log-linear between, constant
+// beyond.
+constexpr double kRefinedNodes[2] = {9.7e4, 7.7e5}, kRefinedRate[2] = {11.4e6, 8.6e6};
+double refined_rate(double updates) {
+  const double x = std::clamp(std::log(updates / kRefinedNodes[0]) / std::log(kRefinedNodes[1] / kRefinedNodes[0]), 0.0, 1.0);
+  return kRefinedRate[0] * std::pow(kRefinedRate[1] / kRefinedRate[0], x);
+}
 
 double d3q19_rate(double nodes, bool single) {
   const double* rate = single ? kD3Q19SingleRate : kD3Q19DoubleRate;
@@ -90,6 +101,14 @@ CostEstimate estimate_cost(const nlohmann::json& canonical_scene, const PhaseLen
                                                     (scene.eta > 0 ? k2DKelvinVoigtPerSegment : 0.0));
   } else {
     c.fluid_seconds_per_step = nodes / d3q19_rate(nodes, scene.resolution.precision == lbm::Precision::single_precision);
+    if (scene.resolution.refine) {
+      // The refined fluid: per fine step half the coarse lattice's cells and all the fine
+      // lattice's, at its own rate (two passes in double, refined_rate).
+      const RefinedCellCounts cells = refined_cell_counts(scene);
+      const double updates = 0.5 * cells.coarse + cells.fine;
+      c.nodes = std::llround(updates);
+      c.fluid_seconds_per_step = updates / refined_rate(updates);
+    }
     c.membrane_thread_efficiency = k3DMembraneThreadEfficiency;
     const double vertices = 10.0 * std::pow(4.0, scene.resolution.mesh_level) + 2.0;
     const double support = ib::delta_support_nodes(scene.resolution.delta, 3);
