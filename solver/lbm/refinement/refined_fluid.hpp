@@ -188,25 +188,15 @@ class RefinedFluid {
   // the same number on both levels).
   double max_speed() const {
     double m2 = 0.0;
-    const std::size_t N = block_.coarse_size(), F = block_.fine_size();
-    for (int z = 0; z < block_.coarse_n(2); ++z)
-      for (int y = 0; y < block_.coarse_n(1); ++y)
-        for (int x = 0; x < block_.coarse_n(0); ++x) {
-          if (block_.covered({x, y, z})) continue;
-          const std::size_t n = block_.coarse_index(x, y, z);
-          double s = 0.0;
-          for (int a = 0; a < D; ++a) s += coarse_u_[a * N + n] * coarse_u_[a * N + n];
-          m2 = std::max(m2, s);
-        }
-    for (int z = 0; z < block_.fine_n(2); ++z)
-      for (int y = 0; y < block_.fine_n(1); ++y)
-        for (int x = 0; x < block_.fine_n(0); ++x) {
-          if (!block_.fine_in_block({x, y, z})) continue;
-          const std::size_t n = block_.fine_index(x, y, z);
-          double s = 0.0;
-          for (int a = 0; a < D; ++a) s += fine_u_[a * F + n] * fine_u_[a * F + n];
-          m2 = std::max(m2, s);
-        }
+    const auto largest = [&](const std::vector<Span>& spans, const std::vector<double>& u, std::size_t N) {
+      for_each_cell(spans, [&](std::size_t n) {
+        double s = 0.0;
+        for (int a = 0; a < D; ++a) s += u[a * N + n] * u[a * N + n];
+        m2 = std::max(m2, s);
+      });
+    };
+    largest(coarse_collide_, coarse_u_, block_.coarse_size());
+    largest(fine_collide_, fine_u_, block_.fine_size());
     return std::sqrt(m2);
   }
 
@@ -217,22 +207,15 @@ class RefinedFluid {
   // (V = 1), in fine cell volumes; the populations' mass is the cell count plus this.
   double mass_excess() const {
     double m = 0.0;
-    for (int z = 0; z < block_.coarse_n(2); ++z)
-      for (int y = 0; y < block_.coarse_n(1); ++y)
-        for (int x = 0; x < block_.coarse_n(0); ++x) {
-          if (block_.covered({x, y, z})) continue;
-          const std::size_t n = block_.coarse_index(x, y, z);
-          double s = 0.0;
-          for (int i = 0; i < Q; ++i) s += coarse_[block_.coarse_at(n, i)];
-          m += double(1 << D) * s;
-        }
-    for (int z = 0; z < block_.fine_n(2); ++z)
-      for (int y = 0; y < block_.fine_n(1); ++y)
-        for (int x = 0; x < block_.fine_n(0); ++x) {
-          if (!block_.fine_in_block({x, y, z})) continue;
-          const std::size_t n = block_.fine_index(x, y, z);
-          for (int i = 0; i < Q; ++i) m += fine_[block_.fine_at(n, i)];
-        }
+    const auto add = [&](const std::vector<Span>& spans, const std::vector<double>& f, std::size_t N, double volume) {
+      for_each_cell(spans, [&](std::size_t n) {
+        double sum = 0.0;
+        for (int i = 0; i < Q; ++i) sum += f[std::size_t(i) * N + n];
+        m += volume * sum;
+      });
+    };
+    add(coarse_collide_, coarse_, block_.coarse_size(), double(1 << D));
+    add(fine_collide_, fine_, block_.fine_size(), 1.0);
     return m;
   }
 
@@ -265,6 +248,11 @@ class RefinedFluid {
     int length;
   };
   static constexpr int kSpan = 256;
+  template <class F>
+  static void for_each_cell(const std::vector<Span>& spans, F&& f) {
+    for (const Span& r : spans)
+      for (int m = 0; m < r.length; ++m) f(r.start + std::size_t(m));
+  }
   static std::vector<Span> spans_of(const std::vector<std::size_t>& cells) {
     std::vector<Span> out;
     for (std::size_t c : cells) {
