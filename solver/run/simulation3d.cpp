@@ -462,6 +462,10 @@ class Simulation3D {
     const std::size_t n = mesh_.vertex_count();
     const double wall = 0.5 * units_.shear_rate * grid_.ny * shear_factor;  // k H / 2 (1): the same lattice velocity on both levels
     refined_->set_wall_velocity(-wall, wall);
+    // The coarse lattice carries no force; its velocity is read only on the step before an
+    // output row (max_speed), and its density only at the walls (which the fluid always writes).
+    refined_->set_coarse_fields(full_fields_next_);
+    full_fields_next_ = false;
     double* p[3] = {refined_->fine_force(0), refined_->fine_force(1), refined_->fine_force(2)};
     const double* u[3] = {refined_->fine_velocity(0), refined_->fine_velocity(1), refined_->fine_velocity(2)};
     const auto start = Clock::now();
@@ -504,7 +508,7 @@ class Simulation3D {
   // < max_speed = 0.2). Everywhere on the step before an output row (max_speed reads it all).
   static constexpr int kRegionMargin = 5;
   void set_macroscopic_region() {
-    if (refined_) return;  // the refined fluid writes u and rho everywhere
+    if (refined_) return;  // the refined fluid's coarse fields: step_refined
     if (full_fields_next_) {
       fluid_->set_macroscopic_everywhere();
       full_fields_next_ = false;

@@ -42,26 +42,43 @@
 #include "solver/lbm/refinement/explosion.hpp"
 #include "solver/lbm/refinement/refined_block.hpp"
 #include "solver/lbm/relaxation.hpp"
+#include "solver/lbm/static_for.hpp"
 
 namespace capsule::lbm::refinement {
 
 // Collides `length` consecutive cells from `first` (populations by direction, N cells per
-// direction, shifted): one vector loop, cloned per CPU like Fluid's rows (collide_and_bounce.hpp);
-// rho (when with_rho) and u get the macroscopic fields.
-template <class L, bool trt, bool with_rho>
-[[gnu::flatten]] CAPSULE_LBM_FAST_CLONE_ATTR void collide_run(double* pop, std::size_t N, const double* force, double s_nu,
-                                                              double* rho_out, double* u_out, std::size_t first, int length) {
+// direction, shifted) and writes population i of cell n to out + i N + n + offset[i]: in place
+// (out = pop, offsets zero) or pushed to its neighbour in the next lattice (streaming fused
+// with the collision). One vector loop over pointers per direction, unrolled over the
+// directions like Fluid's rows (collide_and_bounce.hpp) so that it vectorises, cloned per
+// CPU. With macro, the cells read the force and write u (and rho when with_rho); without, they
+// collide with zero force and write neither (the same populations, bitwise, when the force
+// is zero: the same operations, as in Fluid's unflagged rows).
+template <class L, bool trt, bool with_rho, bool macro = true>
+[[gnu::flatten]] CAPSULE_LBM_FAST_CLONE_ATTR void collide_run(const double* pop, double* out, const std::array<long, L::Q>& offset,
+                                                              std::size_t N, const double* force, double s_nu, double* rho_out,
+                                                              double* u_out, std::size_t first, int length) {
   constexpr int Q = L::Q, D = L::D;
+  const double* g[Q];
+  double* o[Q];
+  static_for<Q>([&](auto i) __attribute__((always_inline)) {
+    g[i] = pop + std::size_t(i) * N + first;
+    o[i] = out + std::size_t(i) * N + std::size_t(long(first) + offset[i]);
+  });
+  const double* F[D];
+  double* u[3];
+  static_for<D>([&](auto a) __attribute__((always_inline)) { F[a] = force + std::size_t(a) * N + first; });
+  static_for<3>([&](auto a) __attribute__((always_inline)) { u[a] = u_out + std::size_t(a) * N + first; });
+  double* rho_row = with_rho ? rho_out + first : nullptr;
 #pragma omp simd
   for (int m = 0; m < length; ++m) {
-    const std::size_t n = first + std::size_t(m);
-    double f[Q], F[3] = {0.0, 0.0, 0.0}, rho, u[3] = {0.0, 0.0, 0.0};
-    for (int i = 0; i < Q; ++i) f[i] = pop[std::size_t(i) * N + n];
-    for (int a = 0; a < D; ++a) F[a] = force[std::size_t(a) * N + n];
-    SplitCollision<L, double>::template collide<true, trt>(f, F, s_nu, rho, u);
-    for (int i = 0; i < Q; ++i) pop[std::size_t(i) * N + n] = f[i];
-    if constexpr (with_rho) rho_out[n] = rho;
-    for (int a = 0; a < 3; ++a) u_out[std::size_t(a) * N + n] = a < D ? u[a] : 0.0;
+    double f[Q], Fm[3] = {0.0, 0.0, 0.0}, rho, um[3] = {0.0, 0.0, 0.0};
+    static_for<Q>([&](auto i) __attribute__((always_inline)) { f[i] = g[i][m]; });
+    if constexpr (macro) static_for<D>([&](auto a) __attribute__((always_inline)) { Fm[a] = F[a][m]; });
+    SplitCollision<L, double>::template collide<true, trt>(f, Fm, s_nu, rho, um);
+    static_for<Q>([&](auto i) __attribute__((always_inline)) { o[i][m] = f[i]; });
+    if constexpr (macro && with_rho) rho_row[m] = rho;
+    if constexpr (macro) static_for<3>([&](auto a) __attribute__((always_inline)) { u[a][m] = a < D ? um[a] : 0.0; });
   }
 }
 
@@ -89,7 +106,7 @@ class RefinedFluid {
         ring_(block_) {
     if (!(nu > 0.0)) throw std::invalid_argument("RefinedFluid: viscosity must be positive");
     for (const auto& c : ring_.cells) ring_cells_.push_back(c.coarse);
-    moved_.assign(block_.coarse_size(), 0.0);
+    moved_.assign(ring_cells_.size(), 0.0);
     classify_cells();
     initialise_velocity([](double, double, double) { return std::array<double, 3>{0.0, 0.0, 0.0}; });
   }
@@ -100,6 +117,13 @@ class RefinedFluid {
 
   // The relaxation rates of both levels (relaxation.hpp): mrt, or trt with Lambda = 3/16.
   void set_collision(CollisionModel model) { collision_ = model; }
+
+  // The coarse fields. On (the default), every coarse cell reads the coarse force and writes u
+  // and rho. Off, the cells away from the walls and the block neither read the force (taken as
+  // zero) nor write u and rho (the populations bitwise the same when the coarse force is zero):
+  // a driver whose force lives on the fine level only turns it on for the steps whose velocity
+  // it reads (max_speed). Memory traffic of a coarse update: 360 bytes on, 304 off.
+  void set_coarse_fields(bool on) { coarse_fields_ = on; }
 
   void set_wall_velocity(double u_bottom, double u_top) {
     u_bottom_ = u_bottom;
@@ -152,8 +176,7 @@ class RefinedFluid {
     const double exploded = explode<L>(block_, ring_, coarse_.data(), fine_.data(), taylor_);
     for (int sub = 0; sub < 2; ++sub) {
       before(sub);
-      collide_fine();
-      stream_fine();
+      collide_and_stream_fine();
       after(sub);
     }
     const double coalesced = stream_coarse();
@@ -262,158 +285,211 @@ class RefinedFluid {
     return out;
   }
 
-  // Collides the cells of `spans`, the runs shared among the threads.
-  template <bool trt, bool with_rho>
-  static void collide_spans(const std::vector<Span>& spans, double* pop, std::size_t N, const double* force, double s_nu,
-                            double* rho_out, double* u_out) {
+  // Collides the cells of `spans` (the runs shared among the threads), in place (out = pop,
+  // offsets zero) or pushing every population to its neighbour in `out`.
+  template <bool trt, bool with_rho, bool macro>
+  static void collide_spans(const std::vector<Span>& spans, const double* pop, double* out, const std::array<long, Q>& offset,
+                            std::size_t N, const double* force, double s_nu, double* rho_out, double* u_out) {
     const long count = long(spans.size());
 #pragma omp parallel for schedule(static)
     for (long k = 0; k < count; ++k)
-      collide_run<L, trt, with_rho>(pop, N, force, s_nu, rho_out, u_out, spans[std::size_t(k)].start, spans[std::size_t(k)].length);
+      collide_run<L, trt, with_rho, macro>(pop, out, offset, N, force, s_nu, rho_out, u_out, spans[std::size_t(k)].start,
+                                    spans[std::size_t(k)].length);
+  }
+  template <bool with_rho, bool macro = true>
+  void collide_level(const std::vector<Span>& spans, std::vector<double>& pop, double* out, const std::array<long, Q>& offset,
+                     const std::vector<double>& force, double s_nu, double* rho_out, std::vector<double>& u) {
+    const std::size_t N = pop.size() / Q;
+    if (collision_ == CollisionModel::trt)
+      collide_spans<true, with_rho, macro>(spans, pop.data(), out, offset, N, force.data(), s_nu, rho_out, u.data());
+    else
+      collide_spans<false, with_rho, macro>(spans, pop.data(), out, offset, N, force.data(), s_nu, rho_out, u.data());
   }
 
+  // The coarse collision: the cells the transfers and the table streaming read collide in
+  // place; the others collide and stream in one pass into the next lattice.
   void collide_coarse() {
-    if (collision_ == CollisionModel::trt)
-      collide_spans<true, true>(coarse_collide_, coarse_.data(), block_.coarse_size(), coarse_force_.data(), s_coarse_,
-                                         coarse_rho_.data(), coarse_u_.data());
+    collide_level<true>(coarse_in_place_, coarse_, coarse_.data(), zero_offset_, coarse_force_, s_coarse_, coarse_rho_.data(),
+                        coarse_u_);
+    if (coarse_fields_)
+      collide_level<true>(coarse_fused_, coarse_, coarse_next_.data(), coarse_offset_, coarse_force_, s_coarse_,
+                          coarse_rho_.data(), coarse_u_);
     else
-      collide_spans<false, true>(coarse_collide_, coarse_.data(), block_.coarse_size(), coarse_force_.data(), s_coarse_,
-                                         coarse_rho_.data(), coarse_u_.data());
+      collide_level<true, false>(coarse_fused_, coarse_, coarse_next_.data(), coarse_offset_, coarse_force_, s_coarse_,
+                                 coarse_rho_.data(), coarse_u_);
   }
 
-  void collide_fine() {
-    if (collision_ == CollisionModel::trt)
-      collide_spans<true, false>(fine_collide_, fine_.data(), block_.fine_size(), fine_force_.data(), s_fine_, nullptr,
-                                         fine_u_.data());
-    else
-      collide_spans<false, false>(fine_collide_, fine_.data(), block_.fine_size(), fine_force_.data(), s_fine_, nullptr,
-                                         fine_u_.data());
+  // One fine sub-step: collision and streaming (fused where the cell streams at fixed offsets),
+  // the ghost layer streamed uncollided.
+  void collide_and_stream_fine() {
+    collide_level<false>(fine_in_place_, fine_, fine_.data(), zero_offset_, fine_force_, s_fine_, nullptr, fine_u_);
+    collide_level<false>(fine_fused_, fine_, fine_next_.data(), fine_offset_, fine_force_, s_fine_, nullptr, fine_u_);
+    push_table(fine_push_cells_, fine_push_, fine_.data(), fine_next_.data(), block_.fine_size());
+    const long kept = long(fine_keep_.size());
+#pragma omp parallel for schedule(static)
+    for (long k = 0; k < kept; ++k) fine_next_[fine_keep_[std::size_t(k)]] = fine_[fine_keep_[std::size_t(k)]];
+    std::swap(fine_, fine_next_);
   }
 
-  // Streams the runs of cells whose every population comes from the neighbour at a fixed
-  // index offset (no wall, no wrap, no transfer): one contiguous copy per direction.
-  static void stream_spans(const std::vector<Span>& spans, const double* from, double* to, std::size_t N,
-                           const std::array<long, Q>& offset) {
+  // Pushes the post-collision populations of the runs `spans` (collided in place) to their
+  // neighbours at a fixed index offset: one contiguous copy per direction.
+  static void push_spans(const std::vector<Span>& spans, const double* from, double* to, std::size_t N,
+                         const std::array<long, Q>& offset) {
     const long count = long(spans.size());
 #pragma omp parallel for schedule(static)
     for (long k = 0; k < count; ++k) {
       const std::size_t first = spans[std::size_t(k)].start;
       const int length = spans[std::size_t(k)].length;
       for (int i = 0; i < Q; ++i) {
-        const double* src = from + std::size_t(i) * N + std::size_t(long(first) - offset[i]);
-        double* dst = to + std::size_t(i) * N + first;
+        const double* src = from + std::size_t(i) * N + first;
+        double* dst = to + std::size_t(i) * N + std::size_t(long(first) + offset[i]);
 #pragma omp simd
         for (int m = 0; m < length; ++m) dst[m] = src[m];
       }
     }
   }
 
-  // Pull streaming over the whole fine lattice; a ghost cell whose source lies outside keeps
-  // its value (it never reaches the block nor a coalescence, coalescence.hpp).
-  void stream_fine() {
-    const std::size_t F = block_.fine_size();
-    stream_spans(fine_fast_spans_, fine_.data(), fine_next_.data(), F, fine_offset_);
-    const long cells = long(fine_slow_.size());
+  // Pushes the populations of the tabled cells: entry (c, i) the slot of `to` that population
+  // i of cell cells[c] goes to, or kNowhere.
+  static void push_table(const std::vector<std::size_t>& cells, const std::vector<long>& slot, const double* from, double* to,
+                         std::size_t N) {
+    const long count = long(cells.size());
 #pragma omp parallel for schedule(static)
-    for (long c = 0; c < cells; ++c) {
-      const std::size_t n = fine_slow_[std::size_t(c)];
-      for (int i = 0; i < Q; ++i)
-        fine_next_[std::size_t(i) * F + n] = fine_[std::size_t(i) * F + fine_source_[std::size_t(c) * Q + std::size_t(i)]];
+    for (long c = 0; c < count; ++c) {
+      const std::size_t n = cells[std::size_t(c)];
+      for (int i = 0; i < Q; ++i) {
+        const long to_slot = slot[std::size_t(c) * Q + std::size_t(i)];
+        if (to_slot >= 0) to[to_slot] = from[std::size_t(i) * N + n];
+      }
     }
-    std::swap(fine_, fine_next_);
   }
 
+  // Streams the coarse lattice: the in-place cells push (at fixed offsets, through the table,
+  // or bounced back at a wall: half-way bounce-back with the moving-wall term of fluid.hpp);
+  // ring cells take the populations that come from the fine lattice as children averages.
   // Returns the mass the coalescence created (fine cell volumes).
   double stream_coarse() {
-    using B = MomentBasis<L>;
     const std::size_t N = block_.coarse_size();
-    std::fill(moved_.begin(), moved_.end(), 0.0);
-    stream_spans(coarse_fast_spans_, coarse_.data(), coarse_next_.data(), N, coarse_offset_);
-    const long cells = long(coarse_slow_.size());
+    push_spans(coarse_copy_, coarse_.data(), coarse_next_.data(), N, coarse_offset_);
+    push_table(coarse_push_cells_, coarse_push_, coarse_.data(), coarse_next_.data(), N);
+    const long walls = long(coarse_wall_.size());
 #pragma omp parallel for schedule(static)
-    for (long c = 0; c < cells; ++c) {
-      const std::size_t n = coarse_slow_[std::size_t(c)];
+    for (long k = 0; k < walls; ++k) {
+      // Population j of cell n leaves through a wall and comes back as i = opposite(j), which
+      // points away from it.
+      const WallEntry& w = coarse_wall_[std::size_t(k)];
+      const int i = MomentBasis<L>::opposite[w.j];
+      const double uw = L::c[i][1] > 0 ? u_bottom_ : u_top_;
+      coarse_next_[std::size_t(i) * N + w.cell] =
+          coarse_[std::size_t(w.j) * N + w.cell] + 6.0 * weight(i) * coarse_rho_[w.cell] * L::c[i][0] * uw;
+    }
+    const long ring = long(ring_cells_.size());
+#pragma omp parallel for schedule(static)
+    for (long r = 0; r < ring; ++r) {
+      const std::size_t n = ring_cells_[std::size_t(r)];
+      double moved_here = 0.0;
       for (int i = 0; i < Q; ++i) {
-        double& out = coarse_next_[std::size_t(i) * N + n];
-        const long source = coarse_source_[std::size_t(c) * Q + std::size_t(i)];
-        if (source >= 0) {
-          out = coarse_[std::size_t(i) * N + std::size_t(source)];
-        } else if (source == kFromWall) {
-          // Half-way bounce-back with the moving-wall term (fluid.hpp): c_i points away from the wall.
-          const double uw = L::c[i][1] > 0 ? u_bottom_ : u_top_;
-          out = coarse_[std::size_t(B::opposite[i]) * N + n] + 6.0 * weight(i) * coarse_rho_[n] * L::c[i][0] * uw;
-        } else {
-          double moved = 0.0;
-          out = coalesce<L>(block_, ring_, taylor_, fine_.data(), std::size_t(ring_.ring_of[n]), i, moved);
-          moved_[n] -= moved;
-        }
+        if (!ring_.from_fine[std::size_t(r) * Q + std::size_t(i)]) continue;
+        double moved = 0.0;
+        coarse_next_[std::size_t(i) * N + n] = coalesce<L>(block_, ring_, taylor_, fine_.data(), std::size_t(r), i, moved);
+        moved_here -= moved;
       }
+      moved_[std::size_t(r)] = moved_here;
     }
     std::swap(coarse_, coarse_next_);
     double created = 0.0;
-    for (std::size_t r : ring_cells_) created += moved_[r];
+    for (double m : moved_) created += m;
     return created;
   }
 
-  // The cells each loop visits, once: the collided cells of both levels (ascending), and the
-  // cells whose populations all stream from a neighbour that needs no test (no wall, no
-  // wrap, no transfer), with the index offset of each direction.
+  // The cells each pass visits, once. Collided cells whose populations all stream at a fixed
+  // index offset (no wall, no wrap, no transfer) and which no transfer reads collide and
+  // stream in one pass; the others collide in place (the explosion reads the ring's
+  // post-collision populations and its Taylor stencil two cells beyond), then stream by
+  // contiguous copies where the offsets are fixed or through a table (walls, wraps, the
+  // ring, the ghost layer). Every slot of the next lattice has one writer.
   void classify_cells() {
     for (int i = 0; i < Q; ++i) {
       coarse_offset_[i] = long(L::c[i][0]) + long(block_.coarse_n(0)) * (long(L::c[i][1]) + long(block_.coarse_n(1)) * long(D == 3 ? L::c[i][2] : 0));
       fine_offset_[i] = long(L::c[i][0]) + long(block_.fine_n(0)) * (long(L::c[i][1]) + long(block_.fine_n(1)) * long(D == 3 ? L::c[i][2] : 0));
     }
-    std::vector<std::size_t> collided, fast;
-    for (long n = 0; n < long(block_.coarse_size()); ++n) {
+    const std::size_t N = block_.coarse_size();
+    const int ny = block_.coarse_n(1);
+    // Within two coarse cells of the fine lattice (the Taylor stencils' reach) on every axis
+    // the block does not span.
+    const auto near_fine_lattice = [&](const std::array<int, 3>& R) {
+      for (int a = 0; a < D; ++a)
+        if (!block_.spans(a) && (R[a] < block_.begin(a) - 3 || R[a] > block_.end(a) + 2)) return false;
+      return true;
+    };
+    std::vector<std::size_t> collided, fused, in_place, copy;
+    for (long n = 0; n < long(N); ++n) {
       const std::array<int, 3> R = coarse_cell(n);
       if (block_.covered(R)) continue;
       collided.push_back(std::size_t(n));
-      bool inside = !block_.ring(R);
-      for (int a = 0; a < D; ++a) inside = inside && R[a] >= 1 && R[a] <= block_.coarse_n(a) - 2;
-      (inside ? fast : coarse_slow_).push_back(std::size_t(n));
-    }
-    coarse_collide_ = spans_of(collided);
-    coarse_fast_spans_ = spans_of(fast);
-    const int ny = block_.coarse_n(1);
-    for (std::size_t n : coarse_slow_) {
-      const std::array<int, 3> R = coarse_cell(long(n));
-      const int r = ring_.ring_of[n];
-      for (int i = 0; i < Q; ++i) {
-        const int ys = R[1] - L::c[i][1];
-        if (ys < 0 || ys >= ny) {
-          coarse_source_.push_back(kFromWall);
-        } else if (r >= 0 && ring_.from_fine[std::size_t(r) * Q + std::size_t(i)]) {
-          coarse_source_.push_back(kFromFine);
+      bool interior = !block_.ring(R);
+      for (int a = 0; a < D; ++a) interior = interior && R[a] >= 1 && R[a] <= block_.coarse_n(a) - 2;
+      if (interior && !near_fine_lattice(R)) {
+        fused.push_back(std::size_t(n));
+        continue;
+      }
+      in_place.push_back(std::size_t(n));
+      if (interior) {
+        copy.push_back(std::size_t(n));
+        continue;
+      }
+      coarse_push_cells_.push_back(std::size_t(n));
+      for (int j = 0; j < Q; ++j) {
+        std::array<int, 3> S = R;
+        for (int a = 0; a < D; ++a) {
+          S[a] += L::c[j][a];
+          if (a != 1) S[a] = (S[a] % block_.coarse_n(a) + block_.coarse_n(a)) % block_.coarse_n(a);
+        }
+        if (S[1] < 0 || S[1] >= ny) {
+          coarse_push_.push_back(kNowhere);
+          coarse_wall_.push_back({std::size_t(n), j});
+        } else if (block_.ring(R) && block_.in_fine_lattice(S)) {
+          coarse_push_.push_back(kNowhere);  // covered, or a ring cell that takes it from the fine lattice
         } else {
-          std::array<int, 3> S = R;
-          for (int a = 0; a < D; ++a) {
-            S[a] -= L::c[i][a];
-            if (a != 1) S[a] = (S[a] % block_.coarse_n(a) + block_.coarse_n(a)) % block_.coarse_n(a);
-          }
-          coarse_source_.push_back(long(block_.coarse_index(S[0], S[1], S[2])));
+          coarse_push_.push_back(long(std::size_t(j) * N + block_.coarse_index(S[0], S[1], S[2])));
         }
       }
     }
+    coarse_collide_ = spans_of(collided);
+    coarse_fused_ = spans_of(fused);
+    coarse_in_place_ = spans_of(in_place);
+    coarse_copy_ = spans_of(copy);
+
+    const std::size_t F = block_.fine_size();
     collided.clear();
-    fast.clear();
-    for (long n = 0; n < long(block_.fine_size()); ++n) {
+    fused.clear();
+    in_place.clear();
+    for (long n = 0; n < long(F); ++n) {
       const std::array<int, 3> x = fine_cell(n);
-      if (block_.fine_in_block(x)) collided.push_back(std::size_t(n));
-      bool inside = true;
-      for (int a = 0; a < D; ++a) inside = inside && x[a] >= 1 && x[a] <= block_.fine_n(a) - 2;
-      (inside ? fast : fine_slow_).push_back(std::size_t(n));
-    }
-    fine_collide_ = spans_of(collided);
-    fine_fast_spans_ = spans_of(fast);
-    // A ghost cell whose source lies outside keeps its value (it never reaches the block).
-    for (std::size_t n : fine_slow_) {
-      const std::array<int, 3> x = fine_cell(long(n));
-      for (int i = 0; i < Q; ++i) {
-        std::array<int, 3> src = x;
-        for (int a = 0; a < D; ++a) src[a] -= L::c[i][a];
-        fine_source_.push_back(block_.wrap_fine(src) ? block_.fine_index(src[0], src[1], src[2]) : n);
+      const bool in_block = block_.fine_in_block(x);
+      bool interior = in_block;
+      for (int a = 0; a < D; ++a) interior = interior && x[a] >= 1 && x[a] <= block_.fine_n(a) - 2;
+      if (in_block) collided.push_back(std::size_t(n));
+      if (interior) {
+        fused.push_back(std::size_t(n));
+        continue;
+      }
+      if (in_block) in_place.push_back(std::size_t(n));
+      fine_push_cells_.push_back(std::size_t(n));
+      for (int j = 0; j < Q; ++j) {
+        std::array<int, 3> to = x, from = x;
+        for (int a = 0; a < D; ++a) {
+          to[a] += L::c[j][a];
+          from[a] -= L::c[j][a];
+        }
+        fine_push_.push_back(block_.wrap_fine(to) ? long(std::size_t(j) * F + block_.fine_index(to[0], to[1], to[2])) : kNowhere);
+        // A ghost cell whose source lies outside keeps its value (it never reaches the block).
+        if (!block_.wrap_fine(from)) fine_keep_.push_back(std::size_t(j) * F + std::size_t(n));
       }
     }
+    fine_collide_ = spans_of(collided);
+    fine_fused_ = spans_of(fused);
+    fine_in_place_ = spans_of(in_place);
   }
 
   // Removes the mass the transfers created at the block's edges and corners (explosion.hpp,
@@ -429,23 +505,29 @@ class RefinedFluid {
   double s_coarse_, s_fine_;
   double u_bottom_ = 0.0, u_top_ = 0.0;
   CollisionModel collision_ = CollisionModel::mrt;
+  bool coarse_fields_ = true;
   std::vector<double> coarse_, coarse_next_, fine_, fine_next_;
   std::vector<double> coarse_force_, fine_force_;
   std::vector<double> coarse_rho_, coarse_u_, fine_u_;
   RingPlan<L> ring_;                     // the transfers' geometry
   std::vector<Taylor> taylor_;           // the explosion's coefficients, per (ring cell, i), for the coalescence
   std::vector<std::size_t> ring_cells_;  // ascending index: the sums are in a fixed order
-  std::vector<double> moved_;
-  // classify_cells(): the collided cells, the cells streamed at a fixed offset, the rest.
-  std::vector<Span> coarse_collide_, fine_collide_, coarse_fast_spans_, fine_fast_spans_;
-  std::vector<std::size_t> coarse_slow_, fine_slow_;
-  // Per slow cell and direction: where the population streams from. Coarse: a cell index, or
-  // kFromWall (bounce-back) or kFromFine (coalescence); fine: a cell index (its own when the
-  // source lies outside).
-  static constexpr long kFromWall = -1, kFromFine = -2;
-  std::vector<long> coarse_source_;
-  std::vector<std::size_t> fine_source_;
-  std::array<long, Q> coarse_offset_{}, fine_offset_{};
+  std::vector<double> moved_;             // per ring cell: the mass its coalescence created
+  // classify_cells(): the collided cells (both levels), those that collide and stream in one
+  // pass, those that collide in place, and how the in-place and ghost cells stream.
+  std::vector<Span> coarse_collide_, fine_collide_, coarse_fused_, fine_fused_, coarse_in_place_, fine_in_place_, coarse_copy_;
+  // Per tabled cell and direction: the slot of the next lattice the population goes to, or
+  // kNowhere (it leaves the lattice, or a transfer or a wall fills its slot).
+  static constexpr long kNowhere = -1;
+  std::vector<std::size_t> coarse_push_cells_, fine_push_cells_;
+  std::vector<long> coarse_push_, fine_push_;
+  struct WallEntry {
+    std::size_t cell;
+    int j;  // the direction that leaves through the wall
+  };
+  std::vector<WallEntry> coarse_wall_;
+  std::vector<std::size_t> fine_keep_;  // slots a ghost cell keeps (their source lies outside)
+  std::array<long, Q> coarse_offset_{}, fine_offset_{}, zero_offset_{};
   double last_mismatch_ = 0.0;
 };
 
