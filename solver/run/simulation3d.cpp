@@ -444,7 +444,8 @@ class Simulation3D {
     if (tau_coarse < 0.505)
       throw std::invalid_argument("resolution.refine: the coarse lattice's relaxation time " + std::to_string(tau_coarse) +
                                   " (the fine lattice's " + std::to_string(units_.tau) + ") is below 0.505: give a larger resolution.tau");
-    refined_ = std::make_unique<lbm::refinement::RefinedFluid<lbm::D3Q19>>(n_[0] / 2, n_[1] / 2, n_[2] / 2, 0.5 * units_.nu, plan.extent);
+    refined_ = std::make_unique<lbm::refinement::RefinedFluid<lbm::D3Q19>>(n_[0] / 2, n_[1] / 2, n_[2] / 2, 0.5 * units_.nu, plan.extent,
+                                                                             s.resolution.precision);
     refined_->set_collision(s.resolution.collision);
     const double k = units_.shear_rate, H = grid_.ny, f0 = Protocol(s).shear_factor(0.0);
     refined_->initialise_velocity([&](double, double y, double) {  // coarse spacings: y_fine = 2 y

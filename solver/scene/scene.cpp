@@ -488,8 +488,6 @@ void read_refine(ObjectReader& q, const json& block, Scene& s) {
   if (s.power_law.K > 0 && s.power_law.model == PowerLawModel::fluid_shell)
     q.fail("refine", "the power law's fluid shell (a viscosity field on the lattice) is not built on the refined block yet",
            "no refine key with power_law.model \"fluid_shell\" and K > 0");
-  if (res.precision != lbm::Precision::double_precision)
-    q.fail("precision", "the refined fluid holds double populations", "\"double\" with resolution.refine");
   const RefinedBlockPlan plan = refined_block_extent(s);
   if (!plan.why.empty()) {
     if (plan.why.rfind("the domain", 0) == 0) q.fail("refine", plan.why, "a x domain even on every axis");
@@ -502,7 +500,8 @@ void read_resolution(ObjectReader& r, Scene& s, const SceneDefaults& defaults) {
   ObjectReader q(block, r.source(), r.child_path("resolution"),
                  {"a", "domain", "segments", "mesh_level", "tau", "kernel", "precision", "membrane_update",
                   "marker_inset", "kelvin_voigt_step", "collision", "refine"});
-  // The refined fluid holds doubles: its scenes default to double precision.
+  // A refined scene defaults to double precision (its first members ran so; single stores the
+  // populations as floats, docs/guide/refinement.md).
   SceneDefaults d = defaults;
   if (block.is_object() && block.contains("refine")) d.precision = lbm::Precision::double_precision;
   read_lattice(q, block, s.dim, s.resolution, d);

@@ -27,8 +27,8 @@ namespace capsule::lbm::refinement {
 // Population i of ring cell r (RingPlan's position; plan.from_fine set) from the fine lattice,
 // with the Taylor coefficients the explosion of this coarse step kept (explosion.hpp); `moved`
 // gets the mass (fine cell volumes) the Taylor terms take out of the children's sum.
-template <class L>
-double coalesce(const RefinedBlock<L::D>& block, const RingPlan<L>& plan, const std::vector<Taylor>& taylor, const double* fine,
+template <class L, class T>
+double coalesce(const RefinedBlock<L::D>& block, const RingPlan<L>& plan, const std::vector<Taylor>& taylor, const T* fine,
                 std::size_t r, int i, double& moved) {
   constexpr int D = L::D, children = RingPlan<L>::children;
   const std::size_t ri = r * L::Q + std::size_t(i);
@@ -37,7 +37,7 @@ double coalesce(const RefinedBlock<L::D>& block, const RingPlan<L>& plan, const 
   Taylor ts = t;
   for (int a = 0; a < D; ++a) ts.g[a] -= t.h[a] * L::c[i][a];
   const auto& c = plan.cells[r];
-  const double* fi = fine + std::size_t(i) * block.fine_size();
+  const T* fi = fine + std::size_t(i) * block.fine_size();
   double sum = 0.0, shift_sum = 0.0;
   for (int k = 0; k < children; ++k) {
     sum += fi[c.child[std::size_t(k)]];

@@ -46,8 +46,8 @@ struct Taylor {
 // The coefficients about ring cell c of population i, f the coarse populations of direction i
 // (RingPlan's stencil: central where both neighbours are uncovered channel cells, else
 // one-sided away from the block over two cells).
-template <class L>
-Taylor taylor_at(const typename RingPlan<L>::Cell& c, const double* f) {
+template <class L, class T>
+Taylor taylor_at(const typename RingPlan<L>::Cell& c, const T* f) {
   using Plan = RingPlan<L>;
   Taylor t;
   const double f0 = f[c.coarse];
@@ -74,12 +74,13 @@ Taylor taylor_at(const typename RingPlan<L>::Cell& c, const double* f) {
   return t;
 }
 
-// coarse: the post-collision populations (shifted, by direction: RefinedBlock::coarse_at);
+// coarse: the post-collision populations (shifted, by direction: RefinedBlock::coarse_at; T
+// double or float, the arithmetic double);
 // fine gets the ghost children. `taylor` keeps each (ring cell, i)'s coefficients for the
 // coalescence of the same coarse step (coalescence.hpp), which reads the same coarse values.
 // Returns the mass (fine cell volumes) the fed channels carry beyond the coarse share.
-template <class L>
-double explode(const RefinedBlock<L::D>& block, const RingPlan<L>& plan, const double* coarse, double* fine,
+template <class L, class T>
+double explode(const RefinedBlock<L::D>& block, const RingPlan<L>& plan, const T* coarse, T* fine,
                std::vector<Taylor>& taylor) {
   constexpr int Q = L::Q, D = L::D, children = RingPlan<L>::children;
   const std::size_t N = block.coarse_size(), F = block.fine_size();
@@ -90,7 +91,7 @@ double explode(const RefinedBlock<L::D>& block, const RingPlan<L>& plan, const d
   for (long r = 0; r < cells; ++r) {
     const auto& c = plan.cells[std::size_t(r)];
     for (int i = 0; i < Q; ++i) {
-      const double* fi = coarse + std::size_t(i) * N;
+      const T* fi = coarse + std::size_t(i) * N;
       const double fR = fi[c.coarse];
       const std::size_t ri = std::size_t(r) * Q + std::size_t(i);
       const Taylor t = taylor_at<L>(c, fi);
@@ -100,9 +101,9 @@ double explode(const RefinedBlock<L::D>& block, const RingPlan<L>& plan, const d
         const double shift = 0.25 * plan.explode_shift[ri * children + std::size_t(k)];
         double e[3] = {0.0, 0.0, 0.0};
         for (int a = 0; a < D; ++a) e[a] = 0.5 * (((k >> a) & 1) - 0.5) + shift * L::c[i][a];
-        const double v = fR + t.change(e);
+        const T v = T(fR + t.change(e));
         fine[std::size_t(i) * F + c.child[std::size_t(k)]] = v;
-        sum += v;
+        sum += double(v);
       }
       if (plan.feeds[ri]) excess[std::size_t(r)] += sum - children * fR;
     }

@@ -38,6 +38,7 @@
 #include "solver/lbm/collision.hpp"
 #include "solver/lbm/split_collision.hpp"
 #include "solver/lbm/lattice.hpp"
+#include "solver/lbm/precision.hpp"
 #include "solver/lbm/refinement/coalescence.hpp"
 #include "solver/lbm/refinement/explosion.hpp"
 #include "solver/lbm/refinement/refined_block.hpp"
@@ -54,13 +55,13 @@ namespace capsule::lbm::refinement {
 // CPU. With macro, the cells read the force and write u (and rho when with_rho); without, they
 // collide with zero force and write neither (the same populations, bitwise, when the force
 // is zero: the same operations, as in Fluid's unflagged rows).
-template <class L, bool trt, bool with_rho, bool macro = true>
-[[gnu::flatten]] CAPSULE_LBM_FAST_CLONE_ATTR void collide_run(const double* pop, double* out, const std::array<long, L::Q>& offset,
+template <class L, class T, bool trt, bool with_rho, bool macro = true>
+[[gnu::flatten]] CAPSULE_LBM_FAST_CLONE_ATTR void collide_run(const T* pop, T* out, const std::array<long, L::Q>& offset,
                                                               std::size_t N, const double* force, double s_nu, double* rho_out,
                                                               double* u_out, std::size_t first, int length) {
   constexpr int Q = L::Q, D = L::D;
-  const double* g[Q];
-  double* o[Q];
+  const T* g[Q];
+  T* o[Q];
   static_for<Q>([&](auto i) __attribute__((always_inline)) {
     g[i] = pop + std::size_t(i) * N + first;
     o[i] = out + std::size_t(i) * N + std::size_t(long(first) + offset[i]);
@@ -73,10 +74,10 @@ template <class L, bool trt, bool with_rho, bool macro = true>
 #pragma omp simd
   for (int m = 0; m < length; ++m) {
     double f[Q], Fm[3] = {0.0, 0.0, 0.0}, rho, um[3] = {0.0, 0.0, 0.0};
-    static_for<Q>([&](auto i) __attribute__((always_inline)) { f[i] = g[i][m]; });
+    static_for<Q>([&](auto i) __attribute__((always_inline)) { f[i] = double(g[i][m]); });
     if constexpr (macro) static_for<D>([&](auto a) __attribute__((always_inline)) { Fm[a] = F[a][m]; });
     SplitCollision<L, double>::template collide<true, trt>(f, Fm, s_nu, rho, um);
-    static_for<Q>([&](auto i) __attribute__((always_inline)) { o[i][m] = f[i]; });
+    static_for<Q>([&](auto i) __attribute__((always_inline)) { o[i][m] = T(f[i]); });
     if constexpr (macro && with_rho) rho_row[m] = rho;
     if constexpr (macro) static_for<3>([&](auto a) __attribute__((always_inline)) { u[a][m] = a < D ? um[a] : 0.0; });
   }
@@ -84,20 +85,26 @@ template <class L, bool trt, bool with_rho, bool macro = true>
 
 template <class L>
 class RefinedFluid {
+  // The populations of both levels and their next lattices in one precision.
+  template <class T>
+  struct Levels {
+    std::vector<T> coarse, coarse_next, fine, fine_next;
+  };
+
  public:
   static constexpr int Q = L::Q;
   static constexpr int D = L::D;
   using Block = RefinedBlock<D>;
 
-  // nu: kinematic viscosity in coarse lattice units; starts at rest, rho = 1.
-  RefinedFluid(int nx, int ny, int nz, double nu, const BlockExtent& extent)
+  // nu: kinematic viscosity in coarse lattice units; starts at rest, rho = 1. The populations
+  // are stored in `precision` (single: floats, half the memory traffic; the arithmetic is
+  // double in both, and single conserves the mass to float round-off instead of double's).
+  RefinedFluid(int nx, int ny, int nz, double nu, const BlockExtent& extent,
+               Precision precision = Precision::double_precision)
       : block_(nx, ny, nz, extent),
         s_coarse_(shear_rate_from_viscosity(nu)),
         s_fine_(shear_rate_from_viscosity(2.0 * nu)),
-        coarse_(block_.coarse_size() * Q),
-        coarse_next_(coarse_.size()),
-        fine_(block_.fine_size() * Q),
-        fine_next_(fine_.size()),
+        single_precision_(precision == Precision::single_precision),
         coarse_force_(3 * block_.coarse_size(), 0.0),
         fine_force_(3 * block_.fine_size(), 0.0),
         coarse_rho_(block_.coarse_size(), 1.0),
@@ -105,6 +112,12 @@ class RefinedFluid {
         fine_u_(3 * block_.fine_size(), 0.0),
         ring_(block_) {
     if (!(nu > 0.0)) throw std::invalid_argument("RefinedFluid: viscosity must be positive");
+    on_levels([&](auto& p) {
+      p.coarse.resize(block_.coarse_size() * Q);
+      p.coarse_next.resize(p.coarse.size());
+      p.fine.resize(block_.fine_size() * Q);
+      p.fine_next.resize(p.fine.size());
+    });
     for (const auto& c : ring_.cells) ring_cells_.push_back(c.coarse);
     moved_.assign(ring_cells_.size(), 0.0);
     classify_cells();
@@ -112,6 +125,7 @@ class RefinedFluid {
   }
 
   const Block& block() const { return block_; }
+  Precision precision() const { return single_precision_ ? Precision::single_precision : Precision::double_precision; }
   double shear_rate_coarse() const { return s_coarse_; }
   double shear_rate_fine() const { return s_fine_; }
 
@@ -139,7 +153,9 @@ class RefinedFluid {
           const auto v = u(x + 0.5, y + 0.5, z + 0.5);
           double f[Q];
           equilibrium(1.0, v, f);
-          for (int i = 0; i < Q; ++i) coarse_[block_.coarse_at(n, i)] = f[i];
+          on_levels([&](auto& p) {
+            for (int i = 0; i < Q; ++i) p.coarse[block_.coarse_at(n, i)] = f[i];
+          });
           for (int a = 0; a < 3; ++a) coarse_u_[a * block_.coarse_size() + n] = a < D ? v[a] : 0.0;
         }
     for (int z = 0; z < block_.fine_n(2); ++z)
@@ -150,7 +166,9 @@ class RefinedFluid {
           const auto v = u(p[0], p[1], p[2]);
           double f[Q];
           equilibrium(1.0, v, f);
-          for (int i = 0; i < Q; ++i) fine_[block_.fine_at(n, i)] = f[i];
+          on_levels([&](auto& p) {
+            for (int i = 0; i < Q; ++i) p.fine[block_.fine_at(n, i)] = f[i];
+          });
           for (int a = 0; a < 3; ++a) fine_u_[a * block_.fine_size() + n] = a < D ? v[a] : 0.0;
         }
   }
@@ -159,8 +177,13 @@ class RefinedFluid {
   double* fine_force(int a) { return fine_force_.data() + std::size_t(a) * block_.fine_size(); }
   const double* coarse_velocity(int a) const { return coarse_u_.data() + std::size_t(a) * block_.coarse_size(); }
   const double* fine_velocity(int a) const { return fine_u_.data() + std::size_t(a) * block_.fine_size(); }
-  const std::vector<double>& coarse_populations() const { return coarse_; }
-  const std::vector<double>& fine_populations() const { return fine_; }
+  // The populations (shifted, by direction), as doubles.
+  std::vector<double> coarse_populations() const {
+    return on_levels([](const auto& p) { return std::vector<double>(p.coarse.begin(), p.coarse.end()); });
+  }
+  std::vector<double> fine_populations() const {
+    return on_levels([](const auto& p) { return std::vector<double>(p.fine.begin(), p.fine.end()); });
+  }
 
   void step() {
     step([](int) {}, [](int) {});
@@ -172,15 +195,17 @@ class RefinedFluid {
   // physical velocity at the time level of its force, as Fluid::velocity after a step).
   template <class Before, class After>
   void step(Before&& before, After&& after) {
-    collide_coarse();
-    const double exploded = explode<L>(block_, ring_, coarse_.data(), fine_.data(), taylor_);
-    for (int sub = 0; sub < 2; ++sub) {
-      before(sub);
-      collide_and_stream_fine();
-      after(sub);
-    }
-    const double coalesced = stream_coarse();
-    restore_mass(exploded + coalesced);
+    on_levels([&](auto& p) {
+      collide_coarse(p);
+      const double exploded = explode<L>(block_, ring_, p.coarse.data(), p.fine.data(), taylor_);
+      for (int sub = 0; sub < 2; ++sub) {
+        before(sub);
+        collide_and_stream_fine(p);
+        after(sub);
+      }
+      const double coalesced = stream_coarse(p);
+      restore_mass(p, exploded + coalesced);
+    });
   }
 
   // The fine lattice as the immersed boundary sees it (solver/ib/grid.hpp: node i at i + 1/2, in
@@ -191,17 +216,21 @@ class RefinedFluid {
   double to_fine(int a, double x_coarse) const { return 2.0 * (x_coarse - block_.fine_centre({0, 0, 0})[a]) + 0.5; }
 
   // Everything a later step() reads (the forces are spread afresh before each use): a restart
-  // point holds it, and import_state makes the next step bitwise the one the saved run took.
+  // point holds it, and import_state makes the next step bitwise the one the saved run took
+  // (single-precision populations travel as doubles, exactly).
   struct State {
     std::vector<double> coarse, fine, coarse_density, coarse_velocity, fine_velocity;
   };
-  void export_state(State& out) const { out = {coarse_, fine_, coarse_rho_, coarse_u_, fine_u_}; }
+  void export_state(State& out) const { out = {coarse_populations(), fine_populations(), coarse_rho_, coarse_u_, fine_u_}; }
   void import_state(State&& in) {
-    if (in.coarse.size() != coarse_.size() || in.fine.size() != fine_.size() || in.coarse_density.size() != coarse_rho_.size() ||
-        in.coarse_velocity.size() != coarse_u_.size() || in.fine_velocity.size() != fine_u_.size())
+    if (in.coarse.size() != block_.coarse_size() * Q || in.fine.size() != block_.fine_size() * Q ||
+        in.coarse_density.size() != coarse_rho_.size() || in.coarse_velocity.size() != coarse_u_.size() ||
+        in.fine_velocity.size() != fine_u_.size())
       throw std::invalid_argument("RefinedFluid::import_state: the state is of another lattice or block");
-    coarse_ = std::move(in.coarse);
-    fine_ = std::move(in.fine);
+    on_levels([&](auto& p) {
+      std::copy(in.coarse.begin(), in.coarse.end(), p.coarse.begin());
+      std::copy(in.fine.begin(), in.fine.end(), p.fine.begin());
+    });
     coarse_rho_ = std::move(in.coarse_density);
     coarse_u_ = std::move(in.coarse_velocity);
     fine_u_ = std::move(in.fine_velocity);
@@ -230,15 +259,17 @@ class RefinedFluid {
   // (V = 1), in fine cell volumes; the populations' mass is the cell count plus this.
   double mass_excess() const {
     double m = 0.0;
-    const auto add = [&](const std::vector<Span>& spans, const std::vector<double>& f, std::size_t N, double volume) {
+    const auto add = [&](const std::vector<Span>& spans, const auto& f, std::size_t N, double volume) {
       for_each_cell(spans, [&](std::size_t n) {
         double sum = 0.0;
         for (int i = 0; i < Q; ++i) sum += f[std::size_t(i) * N + n];
         m += volume * sum;
       });
     };
-    add(coarse_collide_, coarse_, block_.coarse_size(), double(1 << D));
-    add(fine_collide_, fine_, block_.fine_size(), 1.0);
+    on_levels([&](const auto& p) {
+      add(coarse_collide_, p.coarse, block_.coarse_size(), double(1 << D));
+      add(fine_collide_, p.fine, block_.fine_size(), 1.0);
+    });
     return m;
   }
 
@@ -287,17 +318,17 @@ class RefinedFluid {
 
   // Collides the cells of `spans` (the runs shared among the threads), in place (out = pop,
   // offsets zero) or pushing every population to its neighbour in `out`.
-  template <bool trt, bool with_rho, bool macro>
-  static void collide_spans(const std::vector<Span>& spans, const double* pop, double* out, const std::array<long, Q>& offset,
+  template <bool trt, bool with_rho, bool macro, class T>
+  static void collide_spans(const std::vector<Span>& spans, const T* pop, T* out, const std::array<long, Q>& offset,
                             std::size_t N, const double* force, double s_nu, double* rho_out, double* u_out) {
     const long count = long(spans.size());
 #pragma omp parallel for schedule(static)
     for (long k = 0; k < count; ++k)
-      collide_run<L, trt, with_rho, macro>(pop, out, offset, N, force, s_nu, rho_out, u_out, spans[std::size_t(k)].start,
+      collide_run<L, T, trt, with_rho, macro>(pop, out, offset, N, force, s_nu, rho_out, u_out, spans[std::size_t(k)].start,
                                     spans[std::size_t(k)].length);
   }
-  template <bool with_rho, bool macro = true>
-  void collide_level(const std::vector<Span>& spans, std::vector<double>& pop, double* out, const std::array<long, Q>& offset,
+  template <bool with_rho, bool macro = true, class T>
+  void collide_level(const std::vector<Span>& spans, std::vector<T>& pop, T* out, const std::array<long, Q>& offset,
                      const std::vector<double>& force, double s_nu, double* rho_out, std::vector<double>& u) {
     const std::size_t N = pop.size() / Q;
     if (collision_ == CollisionModel::trt)
@@ -308,32 +339,36 @@ class RefinedFluid {
 
   // The coarse collision: the cells the transfers and the table streaming read collide in
   // place; the others collide and stream in one pass into the next lattice.
-  void collide_coarse() {
-    collide_level<true>(coarse_in_place_, coarse_, coarse_.data(), zero_offset_, coarse_force_, s_coarse_, coarse_rho_.data(),
+  template <class T>
+  void collide_coarse(Levels<T>& p) {
+    collide_level<true>(coarse_in_place_, p.coarse, p.coarse.data(), zero_offset_, coarse_force_, s_coarse_, coarse_rho_.data(),
                         coarse_u_);
     if (coarse_fields_)
-      collide_level<true>(coarse_fused_, coarse_, coarse_next_.data(), coarse_offset_, coarse_force_, s_coarse_,
+      collide_level<true>(coarse_fused_, p.coarse, p.coarse_next.data(), coarse_offset_, coarse_force_, s_coarse_,
                           coarse_rho_.data(), coarse_u_);
     else
-      collide_level<true, false>(coarse_fused_, coarse_, coarse_next_.data(), coarse_offset_, coarse_force_, s_coarse_,
+      collide_level<true, false>(coarse_fused_, p.coarse, p.coarse_next.data(), coarse_offset_, coarse_force_, s_coarse_,
                                  coarse_rho_.data(), coarse_u_);
   }
 
   // One fine sub-step: collision and streaming (fused where the cell streams at fixed offsets),
   // the ghost layer streamed uncollided.
-  void collide_and_stream_fine() {
-    collide_level<false>(fine_in_place_, fine_, fine_.data(), zero_offset_, fine_force_, s_fine_, nullptr, fine_u_);
-    collide_level<false>(fine_fused_, fine_, fine_next_.data(), fine_offset_, fine_force_, s_fine_, nullptr, fine_u_);
-    push_table(fine_push_cells_, fine_push_, fine_.data(), fine_next_.data(), block_.fine_size());
+  template <class T>
+  void collide_and_stream_fine(Levels<T>& p) {
+    collide_level<false>(fine_in_place_, p.fine, p.fine.data(), zero_offset_, fine_force_, s_fine_, nullptr, fine_u_);
+    collide_level<false>(fine_fused_, p.fine, p.fine_next.data(), fine_offset_, fine_force_, s_fine_, nullptr, fine_u_);
+    push_spans(fine_copy_, p.fine.data(), p.fine_next.data(), block_.fine_size(), fine_offset_);
+    push_table(fine_push_cells_, fine_push_, p.fine.data(), p.fine_next.data(), block_.fine_size());
     const long kept = long(fine_keep_.size());
 #pragma omp parallel for schedule(static)
-    for (long k = 0; k < kept; ++k) fine_next_[fine_keep_[std::size_t(k)]] = fine_[fine_keep_[std::size_t(k)]];
-    std::swap(fine_, fine_next_);
+    for (long k = 0; k < kept; ++k) p.fine_next[fine_keep_[std::size_t(k)]] = p.fine[fine_keep_[std::size_t(k)]];
+    std::swap(p.fine, p.fine_next);
   }
 
   // Pushes the post-collision populations of the runs `spans` (collided in place) to their
   // neighbours at a fixed index offset: one contiguous copy per direction.
-  static void push_spans(const std::vector<Span>& spans, const double* from, double* to, std::size_t N,
+  template <class T>
+  static void push_spans(const std::vector<Span>& spans, const T* from, T* to, std::size_t N,
                          const std::array<long, Q>& offset) {
     const long count = long(spans.size());
 #pragma omp parallel for schedule(static)
@@ -341,8 +376,8 @@ class RefinedFluid {
       const std::size_t first = spans[std::size_t(k)].start;
       const int length = spans[std::size_t(k)].length;
       for (int i = 0; i < Q; ++i) {
-        const double* src = from + std::size_t(i) * N + first;
-        double* dst = to + std::size_t(i) * N + std::size_t(long(first) + offset[i]);
+        const T* src = from + std::size_t(i) * N + first;
+        T* dst = to + std::size_t(i) * N + std::size_t(long(first) + offset[i]);
 #pragma omp simd
         for (int m = 0; m < length; ++m) dst[m] = src[m];
       }
@@ -351,7 +386,8 @@ class RefinedFluid {
 
   // Pushes the populations of the tabled cells: entry (c, i) the slot of `to` that population
   // i of cell cells[c] goes to, or kNowhere.
-  static void push_table(const std::vector<std::size_t>& cells, const std::vector<long>& slot, const double* from, double* to,
+  template <class T>
+  static void push_table(const std::vector<std::size_t>& cells, const std::vector<long>& slot, const T* from, T* to,
                          std::size_t N) {
     const long count = long(cells.size());
 #pragma omp parallel for schedule(static)
@@ -368,10 +404,11 @@ class RefinedFluid {
   // or bounced back at a wall: half-way bounce-back with the moving-wall term of fluid.hpp);
   // ring cells take the populations that come from the fine lattice as children averages.
   // Returns the mass the coalescence created (fine cell volumes).
-  double stream_coarse() {
+  template <class T>
+  double stream_coarse(Levels<T>& p) {
     const std::size_t N = block_.coarse_size();
-    push_spans(coarse_copy_, coarse_.data(), coarse_next_.data(), N, coarse_offset_);
-    push_table(coarse_push_cells_, coarse_push_, coarse_.data(), coarse_next_.data(), N);
+    push_spans(coarse_copy_, p.coarse.data(), p.coarse_next.data(), N, coarse_offset_);
+    push_table(coarse_push_cells_, coarse_push_, p.coarse.data(), p.coarse_next.data(), N);
     const long walls = long(coarse_wall_.size());
 #pragma omp parallel for schedule(static)
     for (long k = 0; k < walls; ++k) {
@@ -380,8 +417,8 @@ class RefinedFluid {
       const WallEntry& w = coarse_wall_[std::size_t(k)];
       const int i = MomentBasis<L>::opposite[w.j];
       const double uw = L::c[i][1] > 0 ? u_bottom_ : u_top_;
-      coarse_next_[std::size_t(i) * N + w.cell] =
-          coarse_[std::size_t(w.j) * N + w.cell] + 6.0 * weight(i) * coarse_rho_[w.cell] * L::c[i][0] * uw;
+      p.coarse_next[std::size_t(i) * N + w.cell] =
+          T(double(p.coarse[std::size_t(w.j) * N + w.cell]) + 6.0 * weight(i) * coarse_rho_[w.cell] * L::c[i][0] * uw);
     }
     const long ring = long(ring_cells_.size());
 #pragma omp parallel for schedule(static)
@@ -391,12 +428,12 @@ class RefinedFluid {
       for (int i = 0; i < Q; ++i) {
         if (!ring_.from_fine[std::size_t(r) * Q + std::size_t(i)]) continue;
         double moved = 0.0;
-        coarse_next_[std::size_t(i) * N + n] = coalesce<L>(block_, ring_, taylor_, fine_.data(), std::size_t(r), i, moved);
+        p.coarse_next[std::size_t(i) * N + n] = T(coalesce<L>(block_, ring_, taylor_, p.fine.data(), std::size_t(r), i, moved));
         moved_here -= moved;
       }
       moved_[std::size_t(r)] = moved_here;
     }
-    std::swap(coarse_, coarse_next_);
+    std::swap(p.coarse, p.coarse_next);
     double created = 0.0;
     for (double m : moved_) created += m;
     return created;
@@ -464,6 +501,7 @@ class RefinedFluid {
     collided.clear();
     fused.clear();
     in_place.clear();
+    copy.clear();
     for (long n = 0; n < long(F); ++n) {
       const std::array<int, 3> x = fine_cell(n);
       const bool in_block = block_.fine_in_block(x);
@@ -475,6 +513,12 @@ class RefinedFluid {
         continue;
       }
       if (in_block) in_place.push_back(std::size_t(n));
+      bool inner = true;  // every population streams at a fixed offset
+      for (int a = 0; a < D; ++a) inner = inner && x[a] >= 1 && x[a] <= block_.fine_n(a) - 2;
+      if (inner) {
+        copy.push_back(std::size_t(n));
+        continue;
+      }
       fine_push_cells_.push_back(std::size_t(n));
       for (int j = 0; j < Q; ++j) {
         std::array<int, 3> to = x, from = x;
@@ -490,15 +534,20 @@ class RefinedFluid {
     fine_collide_ = spans_of(collided);
     fine_fused_ = spans_of(fused);
     fine_in_place_ = spans_of(in_place);
+    fine_copy_ = spans_of(copy);
   }
 
   // Removes the mass the transfers created at the block's edges and corners (explosion.hpp,
   // coalescence.hpp) from the rest populations of the ring cells, evenly: zero in a steady
   // flow linear in space, where both lattices hold their exact solutions.
-  void restore_mass(double created) {
+  template <class T>
+  void restore_mass(Levels<T>& p, double created) {
     last_mismatch_ = created;
     const double per_population = created / (double(1 << D) * double(ring_cells_.size()));
-    for (std::size_t r : ring_cells_) coarse_[block_.coarse_at(r, 0)] -= per_population;
+    for (std::size_t r : ring_cells_) {
+      T& rest = p.coarse[block_.coarse_at(r, 0)];
+      rest = T(double(rest) - per_population);
+    }
   }
 
   Block block_;
@@ -506,7 +555,19 @@ class RefinedFluid {
   double u_bottom_ = 0.0, u_top_ = 0.0;
   CollisionModel collision_ = CollisionModel::mrt;
   bool coarse_fields_ = true;
-  std::vector<double> coarse_, coarse_next_, fine_, fine_next_;
+  // The populations of both levels and their next lattices, in the precision chosen (the other
+  // stays empty); on_levels calls f with the one in use.
+  bool single_precision_;
+  Levels<double> double_;
+  Levels<float> single_;
+  template <class F>
+  decltype(auto) on_levels(F&& f) {
+    return single_precision_ ? f(single_) : f(double_);
+  }
+  template <class F>
+  decltype(auto) on_levels(F&& f) const {
+    return single_precision_ ? f(single_) : f(double_);
+  }
   std::vector<double> coarse_force_, fine_force_;
   std::vector<double> coarse_rho_, coarse_u_, fine_u_;
   RingPlan<L> ring_;                     // the transfers' geometry
@@ -515,7 +576,8 @@ class RefinedFluid {
   std::vector<double> moved_;             // per ring cell: the mass its coalescence created
   // classify_cells(): the collided cells (both levels), those that collide and stream in one
   // pass, those that collide in place, and how the in-place and ghost cells stream.
-  std::vector<Span> coarse_collide_, fine_collide_, coarse_fused_, fine_fused_, coarse_in_place_, fine_in_place_, coarse_copy_;
+  std::vector<Span> coarse_collide_, fine_collide_, coarse_fused_, fine_fused_, coarse_in_place_, fine_in_place_, coarse_copy_,
+      fine_copy_;
   // Per tabled cell and direction: the slot of the next lattice the population goes to, or
   // kNowhere (it leaves the lattice, or a transfer or a wall fills its slot).
   static constexpr long kNowhere = -1;

@@ -30,9 +30,14 @@ TEST_CASE("resolution.refine is read and written only when given", "[scene][refi
   REQUIRE(s.resolution.refine);
   CHECK(s.resolution.refine->levels == 1);
   CHECK(s.resolution.refine->margin == 0.8);
-  // The refined fluid holds doubles: a refined 3D scene defaults to double precision.
+  // A refined 3D scene defaults to double precision (its first members ran so); single is a choice.
   CHECK(s.resolution.precision == lbm::Precision::double_precision);
   CHECK(plain.resolution.precision == lbm::Precision::single_precision);
+  j["resolution"]["precision"] = "single";
+  const Scene single = Scene::from_json(j, "t.json");
+  CHECK(single.resolution.precision == lbm::Precision::single_precision);
+  CHECK(single.to_json()["resolution"]["precision"] == "single");
+  j["resolution"].erase("precision");
   const nlohmann::json canonical = s.to_json();
   CHECK(canonical["resolution"]["refine"] == nlohmann::json({{"levels", 1}, {"margin", 0.8}}));
   // The canonical text reads back to the same scene.
@@ -88,10 +93,6 @@ TEST_CASE("resolution.refine refuses what the refined fluid cannot run, naming t
   refused(j, "resolution.refine.levels: value 2 out of range (allowed: integer in [1, 1])");
   j["resolution"]["refine"] = {{"margn", 1}};
   refused(j, "resolution.refine.margn");
-  j = sphere();
-  j["resolution"]["refine"] = {{"margin", 0.6}};
-  j["resolution"]["precision"] = "single";
-  refused(j, "resolution.precision: the refined fluid holds double populations (allowed: \"double\" with resolution.refine)");
   j = sphere();
   j["resolution"]["refine"] = nlohmann::json::object();
   j["V"] = 5;
