@@ -14,7 +14,7 @@ namespace capsule::cli {
 Command add_bench_command(CLI::App& capsule) {
   struct Settings {
     std::string what;
-    bool quick = false;
+    bool quick = false, refine = false;
     int threads = 0, a = 10, mesh_level = 4;
   };
   auto s = std::make_shared<Settings>();
@@ -30,12 +30,13 @@ Command add_bench_command(CLI::App& capsule) {
   app.add_option("--mesh-level", s->mesh_level, "member3d: icosphere level of the membrane")
       ->capture_default_str()
       ->check(CLI::Range(0, 6));
+  app.add_flag("--refine", s->refine, "member3d: only the rows on the refined fluid (resolution.refine, margin 0.6)");
   return {&app, [s, &app] {
-            if (s->what != "member3d" && (app.count("--a") > 0 || app.count("--mesh-level") > 0)) {
-              std::cerr << "capsule bench: --a and --mesh-level apply to member3d only\n";
+            if (s->what != "member3d" && (app.count("--a") > 0 || app.count("--mesh-level") > 0 || s->refine)) {
+              std::cerr << "capsule bench: --a, --mesh-level and --refine apply to member3d only\n";
               return 2;
             }
-            return s->what == "member3d" ? capsule::bench_member3d(s->quick, s->threads, s->a, s->mesh_level)
+            return s->what == "member3d" ? capsule::bench_member3d(s->quick, s->threads, s->a, s->mesh_level, s->refine)
                                          : capsule::lbm::bench_lbm(s->quick, s->threads);
           }};
 }

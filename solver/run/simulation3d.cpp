@@ -748,6 +748,8 @@ StepSplit3D time_steps3d(const Scene& scene, long warmup_steps, long steps) {
   for (long i = 0; i < warmup_steps; ++i) sim.step(factor);
   const Timings t0 = sim.timings();
   const m3::MembraneTimings m0 = sim.membrane_timings();
+  using RefinedSeconds = lbm::refinement::RefinedFluid<lbm::D3Q19>::Seconds;
+  const RefinedSeconds f0 = sim.refined_fluid() ? sim.refined_fluid()->seconds() : RefinedSeconds{};
   const auto start = Clock::now();
   for (long i = 0; i < steps; ++i) sim.step(factor);
   StepSplit3D r;
@@ -764,6 +766,13 @@ StepSplit3D time_steps3d(const Scene& scene, long warmup_steps, long steps) {
   r.bending = per_step(m1.bending_s, m0.bending_s, steps);
   r.vertices = sim.mesh().vertex_count();
   r.nodes = sim.node_updates_per_step();
+  if (const auto* refined = sim.refined_fluid()) {
+    const RefinedSeconds& f1 = refined->seconds();
+    r.refined = true;
+    r.coarse = per_step(f1.coarse, f0.coarse, steps);
+    r.fine = per_step(f1.fine, f0.fine, steps);
+    r.transfers = per_step(f1.transfers, f0.transfers, steps);
+  }
   return r;
 }
 

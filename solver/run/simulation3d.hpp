@@ -16,6 +16,10 @@ struct StepSplit3D {
   double spreading = 0;  // the part of `coupling` that clears the force field and spreads (21)
   std::size_t vertices = 0;
   double nodes = 0;
+  // A refined member (resolution.refine): one step is a coarse step (two fine ones), and its
+  // fluid splits into the coarse lattice, the fine sub-steps and the transfers.
+  bool refined = false;
+  double coarse = 0, fine = 0, transfers = 0;
 };
 StepSplit3D time_steps3d(const Scene& scene, long warmup_steps, long steps);
 

@@ -35,12 +35,14 @@ MemoryEstimate estimate_memory(const Scene& s) {
   }
   m.restart = (Q + 4 + (field ? 1 : 0)) * n * 8;
   if (s.resolution.refine) {
-    // The refined fluid (solver/lbm/refinement/refined_fluid.hpp), in double: two population
-    // arrays per level, the coarse force, velocity and density, the fine force and velocity,
-    // and the stream tables (a population's source for a tenth of the cells, measured at a =
-    // 10-20). The restart point copies both levels' populations, density and velocities.
+    // The refined fluid (solver/lbm/refinement/refined_fluid.hpp): two population arrays per
+    // level at the scene's precision, the coarse force, velocity and density and the fine force
+    // and velocity in double, and the stream tables (a destination slot for a tenth of the
+    // cells, measured at a = 10-20). The restart point copies both levels' populations (as
+    // doubles), density and velocities.
     const RefinedCellCounts c = refined_cell_counts(s);
-    m.fluid = c.coarse * (2 * Q + 7) * 8 + c.fine * (2 * Q + 6) * 8 + 0.1 * (c.coarse + c.fine) * Q * 8;
+    m.fluid = c.coarse * (2 * Q * population_bytes + 7 * 8) + c.fine * (2 * Q * population_bytes + 6 * 8) +
+              0.1 * (c.coarse + c.fine) * Q * 8;
     m.restart = (c.coarse * (Q + 4) + c.fine * (Q + 3)) * 8;
   }
   m.base = 25e6;  // measured: 25 MB peak for a tiny scene

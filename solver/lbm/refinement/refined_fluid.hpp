@@ -27,6 +27,7 @@
 // fine velocity that of the second sub-step, fine level 2n + 1.
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <functional>
@@ -195,18 +196,36 @@ class RefinedFluid {
   // physical velocity at the time level of its force, as Fluid::velocity after a step).
   template <class Before, class After>
   void step(Before&& before, After&& after) {
+    using Clock = std::chrono::steady_clock;
+    const auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
     on_levels([&](auto& p) {
+      auto t = Clock::now();
       collide_coarse(p);
+      seconds_.coarse += since(t);
+      t = Clock::now();
       const double exploded = explode<L>(block_, ring_, p.coarse.data(), p.fine.data(), taylor_);
+      seconds_.transfers += since(t);
       for (int sub = 0; sub < 2; ++sub) {
         before(sub);
+        t = Clock::now();
         collide_and_stream_fine(p);
+        seconds_.fine += since(t);
         after(sub);
       }
       const double coalesced = stream_coarse(p);
+      t = Clock::now();
       restore_mass(p, exploded + coalesced);
+      seconds_.transfers += since(t);
     });
   }
+
+  // Seconds spent so far (this process) per part of step(): the coarse lattice's collision and
+  // streaming, the fine lattice's sub-steps, and the transfers (explosion, coalescence, the
+  // mass balance). Measured only; nothing depends on them.
+  struct Seconds {
+    double coarse = 0.0, fine = 0.0, transfers = 0.0;
+  };
+  const Seconds& seconds() const { return seconds_; }
 
   // The fine lattice as the immersed boundary sees it (solver/ib/grid.hpp: node i at i + 1/2, in
   // fine spacings), and the map of a position in coarse spacings onto it: x_f = 2 (x_c - first),
@@ -406,6 +425,8 @@ class RefinedFluid {
   // Returns the mass the coalescence created (fine cell volumes).
   template <class T>
   double stream_coarse(Levels<T>& p) {
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
     const std::size_t N = block_.coarse_size();
     push_spans(coarse_copy_, p.coarse.data(), p.coarse_next.data(), N, coarse_offset_);
     push_table(coarse_push_cells_, coarse_push_, p.coarse.data(), p.coarse_next.data(), N);
@@ -420,6 +441,8 @@ class RefinedFluid {
       p.coarse_next[std::size_t(i) * N + w.cell] =
           T(double(p.coarse[std::size_t(w.j) * N + w.cell]) + 6.0 * weight(i) * coarse_rho_[w.cell] * L::c[i][0] * uw);
     }
+    const auto coalescence = Clock::now();
+    seconds_.coarse += std::chrono::duration<double>(coalescence - start).count();
     const long ring = long(ring_cells_.size());
 #pragma omp parallel for schedule(static)
     for (long r = 0; r < ring; ++r) {
@@ -436,6 +459,7 @@ class RefinedFluid {
     std::swap(p.coarse, p.coarse_next);
     double created = 0.0;
     for (double m : moved_) created += m;
+    seconds_.transfers += std::chrono::duration<double>(Clock::now() - coalescence).count();
     return created;
   }
 
@@ -591,6 +615,7 @@ class RefinedFluid {
   std::vector<std::size_t> fine_keep_;  // slots a ghost cell keeps (their source lies outside)
   std::array<long, Q> coarse_offset_{}, fine_offset_{}, zero_offset_{};
   double last_mismatch_ = 0.0;
+  Seconds seconds_;
 };
 
 }  // namespace capsule::lbm::refinement
