@@ -76,6 +76,10 @@ Command add_rigid_sphere_command(CLI::App& capsule) {
   add_choice_option(app, "--kernel", o.delta, "IB delta");
   add_choice_option(app, "--precision", o.precision, "fluid populations");
   app.add_option("--every", o.every, "series interval in kt")->capture_default_str()->check(capsule::cli::finite_number_in(1e-3, 100.0, true));
+  app.add_option("--refine-margin", o.refine_margin,
+                 "refine the fluid by a factor 2 in a block around the shell, this many coarse cells wider on each "
+                 "side (0: uniform); --a is then the fine lattice's radius")
+      ->capture_default_str()->check(CLI::Range(0, 20));
   app.add_option("-o,--series", series, "CSV file for the series (kt, torque, stresslet, leakage, lag)");
   return {&app, [settings] {
     auto& [o, series, domain] = *settings;
@@ -91,8 +95,9 @@ Command add_rigid_sphere_command(CLI::App& capsule) {
       std::ostringstream values;
       values.precision(7);
       values << o.a << "," << (o.marker_radius > 0 ? o.marker_radius : o.a) << "," << o.level << "," << r.grid[0] << ","
-             << r.grid[1] << "," << r.grid[2] << "," << o.spin << "," << choice_name(o.delta) << "," << choice_name(o.precision);
-      write_result(r, series, "a,marker_radius,level,nx,ny,nz,spin,kernel,precision", values.str());
+             << r.grid[1] << "," << r.grid[2] << "," << o.spin << "," << choice_name(o.delta) << "," << choice_name(o.precision) << ","
+             << o.refine_margin;
+      write_result(r, series, "a,marker_radius,level,nx,ny,nz,spin,kernel,precision,refine_margin", values.str());
       return 0;
     } catch (const std::exception& e) {
       std::cerr << "capsule rigid-sphere: " << e.what() << "\n";

@@ -24,12 +24,22 @@ void validate(const RigidShellOptions& o) {
   require(o.level >= 1 && o.level <= 6, "level must be in [1, 6], got " + std::to_string(o.level));
   for (double d : o.domain) require(d >= 3 && d <= 40, "each domain side must be in [3, 40] a, got " + std::to_string(d));
   validate_tethered_options(o, "rigid shell");
+  require(o.refine_margin >= 0 && o.refine_margin <= 20, "refine_margin must be in [0, 20] coarse cells, got " +
+                                                             std::to_string(o.refine_margin));
+  if (o.refine_margin > 0) {
+    for (int d = 0; d < 3; ++d)
+      require(std::lround(o.domain[d] * o.a) % 2 == 0,
+              "a refined box needs an even number of fine nodes per axis, domain x a gives " +
+                  std::to_string(std::lround(o.domain[d] * o.a)));
+    require(o.precision == lbm::Precision::double_precision, "a refined run holds its populations in double");
+  }
 }
 
 RigidShellResult run_rigid_shell(const RigidShellOptions& o) {
   validate(o);
   const double a = o.a, r_m = o.marker_radius > 0 ? o.marker_radius : o.a;
   TetheredMarkers s = tethered_markers_from(o, 3, "rigid shell");
+  s.refine_margin = o.refine_margin;
   RigidShellResult result;
   for (int d = 0; d < 3; ++d) result.grid[d] = s.grid[d] = static_cast<int>(std::lround(o.domain[d] * a));
   // The capsule's own icosphere at the marker radius, centred in the box.

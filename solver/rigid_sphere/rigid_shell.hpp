@@ -39,6 +39,9 @@ struct RigidShellOptions {
   ib::Delta delta = ib::Delta::peskin4;
   lbm::Precision precision = lbm::Precision::double_precision;
   double every = 0.25;                     // series interval in kt
+  // > 0: the fluid refined by a factor 2 in a block around the shell, this many coarse cells
+  // wider on each side (solver/lbm/refinement/); a and the lattice are then the fine ones.
+  int refine_margin = 0;
 };
 
 struct RigidShellRow {

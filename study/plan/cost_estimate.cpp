@@ -41,15 +41,17 @@ constexpr double k2DContrastPerSegment = 0.21e-6, k2DKelvinVoigtPerSegment = 1.3
 // and 0.4 of a core to the 3D membrane side (2 threads: 1.3-1.45x, bench member3d); the 2D
 // membrane (140 segments) runs on one thread.
 constexpr double kThreadEfficiency = 0.8, k3DMembraneThreadEfficiency = 0.4;
-// The refined fluid (resolution.refine; docs/findings/refinement.md "The capsule on the fine
-// level"): node updates of both levels per second on one thread, from the user seconds of a
-// 3D sphere (level 4) less its membrane side, 2026-12-08: 11.4e6 at a = 10 (margin 0.6, 9.7e4
-// updates per fine step), 8.6e6 at a = 20 (margin 0.7, 7.7e5); log-linear between, constant
-// beyond.
-constexpr double kRefinedNodes[2] = {9.7e4, 7.7e5}, kRefinedRate[2] = {11.4e6, 8.6e6};
-double refined_rate(double updates) {
+// The refined fluid (resolution.refine; docs/findings/refinement.md "Speed"): node updates of
+// both levels per second on one thread, from the fluid seconds of a 3D sphere member (level
+// 4, 1200 fine steps), idle machine, 2026-12-08: a = 10 with margin 0.6 (9.67e4 updates per
+// fine step) 29.8e6 in double, 37.2e6 in single; a = 20 with margin 0.9 (9.12e5) 28.4e6 and
+// 33.7e6. Log-linear between, constant beyond.
+constexpr double kRefinedNodes[2] = {9.67e4, 9.12e5}, kRefinedDoubleRate[2] = {29.8e6, 28.4e6},
+                 kRefinedSingleRate[2] = {37.2e6, 33.7e6};
+double refined_rate(double updates, bool single) {
+  const double* rate = single ? kRefinedSingleRate : kRefinedDoubleRate;
   const double x = std::clamp(std::log(updates / kRefinedNodes[0]) / std::log(kRefinedNodes[1] / kRefinedNodes[0]), 0.0, 1.0);
-  return kRefinedRate[0] * std::pow(kRefinedRate[1] / kRefinedRate[0], x);
+  return rate[0] * std::pow(rate[1] / rate[0], x);
 }
 
 double d3q19_rate(double nodes, bool single) {
@@ -103,11 +105,11 @@ CostEstimate estimate_cost(const nlohmann::json& canonical_scene, const PhaseLen
     c.fluid_seconds_per_step = nodes / d3q19_rate(nodes, scene.resolution.precision == lbm::Precision::single_precision);
     if (scene.resolution.refine) {
       // The refined fluid: per fine step half the coarse lattice's cells and all the fine
-      // lattice's, at its own rate (two passes in double, refined_rate).
+      // lattice's, at its own rate in its precision (refined_rate).
       const RefinedCellCounts cells = refined_cell_counts(scene);
       const double updates = 0.5 * cells.coarse + cells.fine;
       c.nodes = std::llround(updates);
-      c.fluid_seconds_per_step = updates / refined_rate(updates);
+      c.fluid_seconds_per_step = updates / refined_rate(updates, scene.resolution.precision == lbm::Precision::single_precision);
     }
     c.membrane_thread_efficiency = k3DMembraneThreadEfficiency;
     const double vertices = 10.0 * std::pow(4.0, scene.resolution.mesh_level) + 2.0;

@@ -133,7 +133,7 @@ TEST_CASE("capsule rigid-sphere writes a summary row and a series - bad options 
   const Result r = run_capsule("rigid-sphere --a 2 --level 1 --domain 5 5 5 --kt 0.1 --every 0.05 -o " + quote(series.string()));
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
-  CHECK(r.output.rfind("a,marker_radius,level,nx,ny,nz,spin,kernel,precision,kt,torque,", 0) == 0);
+  CHECK(r.output.rfind("a,marker_radius,level,nx,ny,nz,spin,kernel,precision,refine_margin,kt,torque,", 0) == 0);
   CHECK(r.output.find("\n2,2,1,10,10,10,0,peskin4,double,") != std::string::npos);
   std::ifstream in(series);
   std::string header;
