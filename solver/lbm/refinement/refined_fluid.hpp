@@ -53,9 +53,11 @@ namespace capsule::lbm::refinement {
 // (out = pop, offsets zero) or pushed to its neighbour in the next lattice (streaming fused
 // with the collision). One vector loop over pointers per direction, unrolled over the
 // directions like Fluid's rows (collide_and_bounce.hpp) so that it vectorises, cloned per
-// CPU. With macro, the cells read the force and write u (and rho when with_rho); without, they
-// collide with zero force and write neither (the same populations, bitwise, when the force
-// is zero: the same operations, as in Fluid's unflagged rows).
+// CPU. The arithmetic is that of the storage, T (as Fluid's single precision: float
+// populations collide in float). With macro, the cells read the force and write u (and rho
+// when with_rho); without, they collide with zero force and write neither (the same
+// populations, bitwise, when the force is zero: the same operations, as in Fluid's unflagged
+// rows).
 template <class L, class T, bool trt, bool with_rho, bool macro = true>
 [[gnu::flatten]] CAPSULE_LBM_FAST_CLONE_ATTR void collide_run(const T* pop, T* out, const std::array<long, L::Q>& offset,
                                                               std::size_t N, const double* force, double s_nu, double* rho_out,
@@ -74,10 +76,11 @@ template <class L, class T, bool trt, bool with_rho, bool macro = true>
   double* rho_row = with_rho ? rho_out + first : nullptr;
 #pragma omp simd
   for (int m = 0; m < length; ++m) {
-    double f[Q], Fm[3] = {0.0, 0.0, 0.0}, rho, um[3] = {0.0, 0.0, 0.0};
-    static_for<Q>([&](auto i) __attribute__((always_inline)) { f[i] = double(g[i][m]); });
-    if constexpr (macro) static_for<D>([&](auto a) __attribute__((always_inline)) { Fm[a] = F[a][m]; });
-    SplitCollision<L, double>::template collide<true, trt>(f, Fm, s_nu, rho, um);
+    using A = T;
+    A f[Q], Fm[3] = {A(0), A(0), A(0)}, rho, um[3] = {A(0), A(0), A(0)};
+    static_for<Q>([&](auto i) __attribute__((always_inline)) { f[i] = A(g[i][m]); });
+    if constexpr (macro) static_for<D>([&](auto a) __attribute__((always_inline)) { Fm[a] = A(F[a][m]); });
+    SplitCollision<L, A>::template collide<true, trt>(f, Fm, A(s_nu), rho, um);
     static_for<Q>([&](auto i) __attribute__((always_inline)) { o[i][m] = T(f[i]); });
     if constexpr (macro && with_rho) rho_row[m] = rho;
     if constexpr (macro) static_for<3>([&](auto a) __attribute__((always_inline)) { u[a][m] = a < D ? um[a] : 0.0; });
@@ -98,8 +101,9 @@ class RefinedFluid {
   using Block = RefinedBlock<D>;
 
   // nu: kinematic viscosity in coarse lattice units; starts at rest, rho = 1. The populations
-  // are stored in `precision` (single: floats, half the memory traffic; the arithmetic is
-  // double in both, and single conserves the mass to float round-off instead of double's).
+  // are stored and collided in `precision` (single: floats, half the memory traffic and twice
+  // the vector width, as Fluid's single precision; the transfers and walls compute in double
+  // either way; single conserves the mass to float round-off instead of double's).
   RefinedFluid(int nx, int ny, int nz, double nu, const BlockExtent& extent,
                Precision precision = Precision::double_precision)
       : block_(nx, ny, nz, extent),

@@ -96,18 +96,18 @@ TEST_CASE("a refined 3D member in single precision follows the double one", "[ca
   CHECK(s.attributes.at("precision") == "single");
   const auto &Dd = d.series.at("D_xy"), &Ds = s.series.at("D_xy");
   REQUIRE(Dd.size() == Ds.size());
-  // The refined fluid's arithmetic is double in both precisions; single only rounds the stored
-  // populations, shifted (f - w, deviations of order 1e-3 here), to float's 6e-8 relative: D_xy
-  // moves by about 1e-8 of itself (measured 2026-12-08: 3.4e-9 at most after kt 0.2). Bound
-  // 1e-6, far below the 6e-5 the uniform lattice's float arithmetic costs
-  // (docs/findings/performance.md "Single against double").
+  // Single stores and collides the populations in float, as the uniform lattice's single
+  // precision, whose members stay within 6e-5 of double in D_xy and the fitted times
+  // (docs/findings/performance.md "Single against double": every difference below 1e-4).
+  // Measured 2026-12-08: 7.1e-6 at most after kt 0.2 (3.4e-9 with float storage and double
+  // arithmetic). Bound: the uniform lattice's 1e-4.
   double worst = 0.0;
   for (std::size_t i = 0; i < Dd.size(); ++i) {
     if (d.series.at("kt")[i] < 0.2) continue;
     worst = std::max(worst, std::abs(Ds[i] / Dd[i] - 1.0));
   }
   INFO("largest relative difference in D_xy " << worst);
-  CHECK(worst < 1e-6);
+  CHECK(worst < 1e-4);
   CHECK(worst > 0.0);
 }
 
