@@ -43,11 +43,11 @@ constexpr double k2DContrastPerSegment = 0.21e-6, k2DKelvinVoigtPerSegment = 1.3
 constexpr double kThreadEfficiency = 0.8, k3DMembraneThreadEfficiency = 0.4;
 // The refined fluid (resolution.refine; docs/findings/refinement.md "Speed"): node updates of
 // both levels per second on one thread, from the fluid seconds of a 3D sphere member (level
-// 4, 1200 fine steps), idle machine, 2026-12-08: a = 10 with margin 0.6 (9.67e4 updates per
-// fine step) 29.8e6 in double, 37.2e6 in single; a = 20 with margin 0.9 (9.12e5) 28.4e6 and
-// 33.7e6. Log-linear between, constant beyond.
-constexpr double kRefinedNodes[2] = {9.67e4, 9.12e5}, kRefinedDoubleRate[2] = {29.8e6, 28.4e6},
-                 kRefinedSingleRate[2] = {37.2e6, 33.7e6};
+// 4, 1200 fine steps), idle machine, 2026-12-08, build d232b86: a = 10 with margin 0.6 (9.67e4
+// updates per fine step) 35.0e6 in double, 50.4e6 in single; a = 20 with margin 0.9 (9.12e5)
+// 28.5e6 and 37.8e6. Log-linear between, constant beyond.
+constexpr double kRefinedNodes[2] = {9.67e4, 9.12e5}, kRefinedDoubleRate[2] = {35.0e6, 28.5e6},
+                 kRefinedSingleRate[2] = {50.4e6, 37.8e6};
 double refined_rate(double updates, bool single) {
   const double* rate = single ? kRefinedSingleRate : kRefinedDoubleRate;
   const double x = std::clamp(std::log(updates / kRefinedNodes[0]) / std::log(kRefinedNodes[1] / kRefinedNodes[0]), 0.0, 1.0);
